@@ -1,0 +1,80 @@
+// The name of every field of every stage config, visited in declaration order, so
+// the YAML loader and the tests walk one list instead of repeating it.
+#pragma once
+
+#include "config/pipeline_config.hpp"
+
+namespace cloudshape::config {
+
+template <class F>
+void visit_fields(PreprocessConfig& c, F&& f) {
+  f("voxel_divisions", c.voxel_divisions);
+  f("max_points", c.max_points);
+  f("min_points", c.min_points);
+  f("smoothing", c.smoothing);
+  f("smoothing_neighbours", c.smoothing_neighbours);
+  f("smoothing_max_curvature", c.smoothing_max_curvature);
+  f("outlier_removal", c.outlier_removal);
+  f("outlier_neighbours", c.outlier_neighbours);
+  f("outlier_stddev", c.outlier_stddev);
+}
+
+template <class F>
+void visit_fields(PlanesConfig& c, F&& f) {
+  f("coarse_threshold", c.coarse_threshold);
+  f("fine_threshold", c.fine_threshold);
+  f("face_max_sagitta", c.face_max_sagitta);
+  f("min_plane_fraction", c.min_plane_fraction);
+  f("min_plane_points", c.min_plane_points);
+  f("max_planes", c.max_planes);
+  f("max_rejected_in_row", c.max_rejected_in_row);
+  f("ransac_iterations", c.ransac_iterations);
+  f("score_samples", c.score_samples);
+  f("sample_radius", c.sample_radius);
+  f("connectivity", c.connectivity);
+  f("boundary_neighbours", c.boundary_neighbours);
+  f("boundary_gap_degrees", c.boundary_gap_degrees);
+  f("line_distance", c.line_distance);
+  f("line_min_support", c.line_min_support);
+  f("min_line_angle_degrees", c.min_line_angle_degrees);
+  f("seed", c.seed);
+}
+
+template <class F>
+void visit_fields(KeypointsConfig& c, F&& f) {
+  f("neighbourhood", c.neighbourhood);
+  f("pursuit_max_steps", c.pursuit_max_steps);
+  f("merge_distance", c.merge_distance);
+}
+
+template <class F>
+void visit_fields(ClassifyConfig& c, F&& f) {
+  f("border_curvature", c.border_curvature);
+  f("corner_gap_degrees", c.corner_gap_degrees);
+  f("sphere_max_rms", c.sphere_max_rms);
+  f("sphere_max_face_fraction", c.sphere_max_face_fraction);
+  f("polyhedron_face_fraction", c.polyhedron_face_fraction);
+  f("degenerate_thickness", c.degenerate_thickness);
+}
+
+template <class F>
+void visit_fields(SolveConfig& c, F&& f) {
+  f("inlier_distance", c.inlier_distance);
+  f("min_inlier_fraction", c.min_inlier_fraction);
+  f("parallel_degrees", c.parallel_degrees);
+  f("perpendicular_degrees", c.perpendicular_degrees);
+  f("verify_samples", c.verify_samples);
+  f("preferred_margin", c.preferred_margin);
+}
+
+// Calls f(section_name, section_struct) for every stage section.
+template <class F>
+void visit_sections(PipelineConfig& c, F&& f) {
+  f("preprocess", c.preprocess);
+  f("planes", c.planes);
+  f("keypoints", c.keypoints);
+  f("classify", c.classify);
+  f("solve", c.solve);
+}
+
+}  // namespace cloudshape::config

@@ -1,0 +1,66 @@
+// The tunables of each pipeline stage as plain structs with their defaults. Lengths
+// are multiples of the cloud resolution (mean nearest-neighbour distance) or fractions
+// of the object's size, so every unit and scale works the same.
+#pragma once
+
+#include <cstdint>
+
+namespace cloudshape::config {
+
+struct PreprocessConfig {
+  double voxel_divisions = 200.0;       // voxel edge = bounding-box diagonal / this
+  std::int64_t max_points = 12000;      // the voxel grows until at most this many remain
+  std::int64_t min_points = 30;         // fewer usable points: the cloud holds no solid
+  bool smoothing = true;                // project flat neighbourhoods on their local plane
+  std::int64_t smoothing_neighbours = 16;
+  double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
+  bool outlier_removal = true;          // statistical outlier removal before everything else
+  std::int64_t outlier_neighbours = 8;
+  double outlier_stddev = 3.0;          // drop points whose mean neighbour distance exceeds mean + this * stddev
+};
+
+struct PlanesConfig {
+  double coarse_threshold = 3.0;        // first RANSAC pass, in resolutions (thesis: two thresholds)
+  double fine_threshold = 0.8;          // refit pass, in resolutions
+  double face_max_sagitta = 0.6;        // a patch curving more than this (x fine threshold) is a tangent strip, not a face
+  double min_plane_fraction = 0.015;    // smallest plane, as a fraction of the cloud's points
+  std::int64_t min_plane_points = 20;
+  std::int64_t max_planes = 16;
+  std::int64_t max_rejected_in_row = 6;  // stop after this many non-face planes in a row
+  std::int64_t ransac_iterations = 60;   // hypotheses per plane
+  std::int64_t score_samples = 1500;     // points that score a hypothesis before the full count
+  double sample_radius = 12.0;           // hypothesis triples drawn within this many resolutions
+  double connectivity = 2.5;             // inliers farther than this (resolutions) from the main patch are dropped
+  std::int64_t boundary_neighbours = 12;
+  double boundary_gap_degrees = 100.0;   // in-plane angular gap that makes a point a boundary point
+  double line_distance = 2.0;            // boundary points within this (resolutions) support a line
+  std::int64_t line_min_support = 4;     // support points each plane must give a line
+  double min_line_angle_degrees = 15.0;  // planes closer to parallel than this make no line
+  std::uint64_t seed = 42;               // RANSAC is deterministic for a given seed
+};
+
+struct KeypointsConfig {
+  std::int64_t neighbourhood = 16;      // points per key-point neighbourhood (thesis 3.2.2)
+  std::int64_t pursuit_max_steps = 200;
+  double merge_distance = 3.0;          // key-points closer than this (resolutions) are one
+};
+
+struct ClassifyConfig {
+  double border_curvature = 0.02;        // surface variation below this: border (thesis 3.2.2)
+  double corner_gap_degrees = 215.0;     // projected angular gap above this: corner (thesis 3.2.3)
+  double sphere_max_rms = 0.02;          // sphere test: fit RMS / radius below this
+  double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
+  double polyhedron_face_fraction = 0.85;  // faces covering this fraction: a polyhedron
+  double degenerate_thickness = 0.5;     // spread (std dev, resolutions) below which the cloud is flat or a line
+};
+
+struct SolveConfig {
+  double inlier_distance = 2.0;          // points within this (resolutions) of the solid explain it
+  double min_inlier_fraction = 0.6;      // below this no candidate solid is reported
+  double parallel_degrees = 10.0;        // normals within this angle count as parallel
+  double perpendicular_degrees = 10.0;   // ... or as perpendicular
+  std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
+  double preferred_margin = 0.02;        // the key-point class wins unless another solid explains this much more
+};
+
+}  // namespace cloudshape::config

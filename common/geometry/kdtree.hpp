@@ -1,0 +1,36 @@
+// k-nearest-neighbour and radius queries over a PointList, through nanoflann.
+// The tree keeps a reference to the points: they must outlive it unchanged.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::geometry {
+
+class KdTree {
+ public:
+  explicit KdTree(const PointList& points);
+  ~KdTree();
+  KdTree(const KdTree&) = delete;
+  KdTree& operator=(const KdTree&) = delete;
+
+  // Indices of the k nearest points to `query` (the query point itself included when
+  // it is in the cloud), nearest first; squared distances in `sq_dists` if given.
+  void knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& indices,
+           std::vector<double>* sq_dists = nullptr) const;
+
+  // Indices of all points within `radius` of `query`, in no particular order.
+  void radius(const Point& query, double radius, std::vector<std::uint32_t>& indices) const;
+
+  const PointList& points() const { return points_; }
+
+ private:
+  struct Index;
+  const PointList& points_;
+  std::unique_ptr<Index> index_;
+};
+
+}  // namespace cloudshape::geometry

@@ -1,0 +1,24 @@
+// Voxel-grid downsampling (one centroid per occupied voxel) and the cloud
+// resolution (mean distance to the nearest neighbour, thesis 3.4).
+#pragma once
+
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::geometry {
+
+// Replaces the points of each cubic voxel of edge `voxel_size` by their centroid.
+// voxel_size <= 0 returns the input unchanged.
+PointList voxel_grid_downsample(const PointList& points, double voxel_size);
+
+// Mean distance from a point to its nearest other point, estimated on at most
+// `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000);
+
+struct Bounds {
+  Point min = Point::Zero();
+  Point max = Point::Zero();
+  double diagonal() const { return (max - min).norm(); }
+};
+Bounds bounding_box(const PointList& points);
+
+}  // namespace cloudshape::geometry

@@ -1,0 +1,140 @@
+#include "pipeline/classify.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/circle.hpp"
+#include "geometry/pca.hpp"
+
+namespace cloudshape::pipeline {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void add_unique(std::vector<Shape>& list, Shape s) {
+  if (s != Shape::unknown && std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
+}
+
+// The solids the flat faces point to: polyhedra when faces cover the cloud, solids of
+// revolution otherwise (their caps and bases are the only true faces they have).
+std::vector<Shape> shapes_from_faces(const PlaneSegmentation& planes, double face_fraction,
+                                     const config::ClassifyConfig& cfg) {
+  std::vector<const DetectedPlane*> faces;
+  for (const auto& p : planes.planes)
+    if (p.is_face) faces.push_back(&p);
+  std::vector<Shape> out;
+  if (face_fraction >= cfg.polyhedron_face_fraction) {
+    if (faces.size() <= 4) out = {Shape::tetrahedron, Shape::box, Shape::pentagonal_prism};
+    else if (faces.size() <= 6) out = {Shape::box, Shape::pentagonal_prism, Shape::tetrahedron};
+    else out = {Shape::pentagonal_prism, Shape::box, Shape::tetrahedron};
+    return out;
+  }
+  bool parallel_pair = false;
+  for (std::size_t a = 0; a < faces.size(); ++a)
+    for (std::size_t b = a + 1; b < faces.size(); ++b)
+      if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -0.95) parallel_pair = true;
+  if (faces.empty()) out = {Shape::sphere, Shape::cylinder, Shape::cone};
+  else if (parallel_pair) out = {Shape::cylinder, Shape::cone};
+  else out = {Shape::cone, Shape::cylinder};
+  return out;
+}
+
+}  // namespace
+
+TypedKeypoint type_keypoint(const PointList& cloud, const Keypoint& keypoint,
+                            const config::ClassifyConfig& cfg) {
+  TypedKeypoint out;
+  out.index = keypoint.index;
+  const geometry::Pca pca = geometry::compute_pca(cloud, keypoint.neighbourhood);
+  out.curvature = pca.surface_variation();
+  if (out.curvature < cfg.border_curvature) {
+    out.type = KeypointType::border;
+    return out;
+  }
+  // Project on the plane normal to e1 (spanned by e0 and e2): an edge becomes a half-plane
+  // with the key-point on its straight side (gap ~180 deg), a corner a wedge (gap > 180).
+  const Eigen::Vector3d e0 = pca.eigenvectors.col(0);
+  const Eigen::Vector3d e2 = pca.eigenvectors.col(2);
+  const Point& k = cloud[keypoint.index];
+  std::vector<double> angles;
+  for (std::uint32_t j : keypoint.neighbourhood) {
+    if (j == keypoint.index) continue;
+    const Eigen::Vector3d d = cloud[j] - k;
+    const double x = d.dot(e0), y = d.dot(e2);
+    if (x * x + y * y > 0.0) angles.push_back(std::atan2(y, x));
+  }
+  double gap = 2.0 * kPi;
+  if (angles.size() >= 2) {
+    std::sort(angles.begin(), angles.end());
+    gap = angles.front() + 2.0 * kPi - angles.back();
+    for (std::size_t i = 1; i < angles.size(); ++i) gap = std::max(gap, angles[i] - angles[i - 1]);
+  }
+  out.gap_degrees = gap * 180.0 / kPi;
+  out.type = out.gap_degrees > cfg.corner_gap_degrees ? KeypointType::corner : KeypointType::edge;
+  return out;
+}
+
+Shape shape_from_keypoints(const KeypointCounts& counts) {
+  switch (counts.corner) {
+    case 0: return counts.edge + counts.border > 0 ? Shape::cylinder : Shape::unknown;
+    case 1: return Shape::cone;
+    case 4: return Shape::tetrahedron;
+    case 8: return Shape::box;
+    case 10: return Shape::pentagonal_prism;
+    default: return Shape::unknown;
+  }
+}
+
+Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& planes,
+                              const KeypointSet& keypoints, double resolution,
+                              const config::ClassifyConfig& cfg) {
+  Classification out;
+  if (cloud.size() < 4) {
+    out.reason = "too few points (" + std::to_string(cloud.size()) + ")";
+    return out;
+  }
+  const geometry::Pca pca = geometry::compute_pca(cloud);
+  const double thin = cfg.degenerate_thickness * resolution;
+  if (!(resolution > 0.0) || std::sqrt(pca.eigenvalues[2]) <= 0.0) {
+    out.reason = "all points coincide";
+    return out;
+  }
+  if (std::sqrt(pca.eigenvalues[1]) < thin) {
+    out.reason = "all points collinear";
+    return out;
+  }
+  if (std::sqrt(pca.eigenvalues[0]) < thin) {
+    out.reason = "all points coplanar";
+    return out;
+  }
+
+  for (const Keypoint& kp : keypoints.keypoints) {
+    out.keypoints.push_back(type_keypoint(cloud, kp, cfg));
+    switch (out.keypoints.back().type) {
+      case KeypointType::corner: ++out.counts.corner; break;
+      case KeypointType::edge: ++out.counts.edge; break;
+      case KeypointType::border: ++out.counts.border; break;
+    }
+  }
+  std::size_t on_faces = 0;
+  for (const auto& p : planes.planes)
+    if (p.is_face) on_faces += p.inliers.size();
+  out.face_fraction = static_cast<double>(on_faces) / static_cast<double>(cloud.size());
+
+  // Sphere test (thesis 3.3.4), on a geometric fit rather than the centroid distance so
+  // that a partial sphere passes too.
+  std::vector<std::uint32_t> sample;
+  const std::size_t step = std::max<std::size_t>(1, cloud.size() / 3000);
+  for (std::size_t i = 0; i < cloud.size(); i += step) sample.push_back(static_cast<std::uint32_t>(i));
+  if (const auto sphere = geometry::fit_sphere(cloud, sample)) {
+    out.sphere_test = sphere->rms < cfg.sphere_max_rms * sphere->radius &&
+                      out.face_fraction <= cfg.sphere_max_face_fraction;
+  }
+  out.shape = out.sphere_test ? Shape::sphere : shape_from_keypoints(out.counts);
+  add_unique(out.candidates, out.shape);
+  for (Shape s : shapes_from_faces(planes, out.face_fraction, cfg)) add_unique(out.candidates, s);
+  for (Shape s : kSolidShapes) add_unique(out.candidates, s);
+  return out;
+}
+
+}  // namespace cloudshape::pipeline

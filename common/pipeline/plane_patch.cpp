@@ -1,0 +1,126 @@
+#include "pipeline/plane_patch.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+
+namespace cloudshape::pipeline::detail {
+namespace {
+
+std::int64_t cell_key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffffLL); }
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+PatchRaster rasterise_patch(const PointList& cloud, const std::vector<std::uint32_t>& inliers,
+                            const geometry::Plane& plane, double cell) {
+  PatchRaster out;
+  if (inliers.empty() || !(cell > 0.0)) {
+    out.largest = inliers;
+    return out;
+  }
+  Eigen::Vector3d u, v;
+  geometry::plane_basis(plane.normal, u, v);
+  const Point origin = cloud[inliers.front()];
+  std::unordered_map<std::int64_t, std::uint32_t> cells;
+  cells.reserve(inliers.size());
+  std::vector<std::uint32_t> cell_of(inliers.size());
+  std::vector<std::pair<std::int64_t, std::int64_t>> coords;
+  for (std::size_t i = 0; i < inliers.size(); ++i) {
+    const Eigen::Vector3d d = cloud[inliers[i]] - origin;
+    const auto cx = static_cast<std::int64_t>(std::floor(d.dot(u) / cell));
+    const auto cy = static_cast<std::int64_t>(std::floor(d.dot(v) / cell));
+    const auto [it, inserted] = cells.try_emplace(cell_key(cx, cy), coords.size());
+    if (inserted) coords.emplace_back(cx, cy);
+    cell_of[i] = it->second;
+  }
+  UnionFind uf(coords.size());
+  std::vector<std::uint8_t> full_neighbourhood(coords.size(), 1);
+  for (std::size_t c = 0; c < coords.size(); ++c) {
+    const auto [cx, cy] = coords[c];
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) {
+        if (dx == 0 && dy == 0) continue;
+        const auto it = cells.find(cell_key(cx + dx, cy + dy));
+        if (it == cells.end())
+          full_neighbourhood[c] = 0;
+        else
+          uf.unite(static_cast<std::uint32_t>(c), it->second);
+      }
+  }
+  std::vector<std::uint32_t> count(coords.size(), 0);
+  for (std::uint32_t c : cell_of) ++count[uf.find(c)];
+  const auto best = static_cast<std::uint32_t>(
+      std::max_element(count.begin(), count.end()) - count.begin());
+  for (std::size_t i = 0; i < inliers.size(); ++i) {
+    if (uf.find(cell_of[i]) != best) continue;
+    out.largest.push_back(inliers[i]);
+    if (!full_neighbourhood[cell_of[i]]) out.border_candidates.push_back(inliers[i]);
+  }
+  return out;
+}
+
+double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>& inliers,
+                       const geometry::Plane& plane) {
+  if (inliers.size() < 12) return 0.0;
+  Eigen::Vector3d u, v;
+  geometry::plane_basis(plane.normal, u, v);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (std::uint32_t i : inliers) centroid += cloud[i];
+  centroid /= static_cast<double>(inliers.size());
+  // Scale in-plane coordinates to ~1 so the 6x6 normal equations stay well conditioned.
+  double scale = 0.0;
+  for (std::uint32_t i : inliers) scale = std::max(scale, (cloud[i] - centroid).norm());
+  if (!(scale > 0.0)) return 0.0;
+  const std::size_t step = std::max<std::size_t>(1, inliers.size() / 3000);
+  std::vector<Eigen::Vector3d> uvd;  // scaled u, scaled v, height above the plane
+  for (std::size_t k = 0; k < inliers.size(); k += step) {
+    const Eigen::Vector3d d = cloud[inliers[k]] - centroid;
+    uvd.emplace_back(d.dot(u) / scale, d.dot(v) / scale, d.dot(plane.normal));
+  }
+  Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
+  auto row = [](const Eigen::Vector3d& q) {
+    Eigen::Matrix<double, 6, 1> r;
+    r << 1.0, q.x(), q.y(), q.x() * q.x(), q.x() * q.y(), q.y() * q.y();
+    return r;
+  };
+  for (const auto& q : uvd) {
+    const auto r = row(q);
+    ata.noalias() += r * r.transpose();
+    atb.noalias() += r * q.z();
+  }
+  const Eigen::Matrix<double, 6, 1> coef = ata.ldlt().solve(atb);
+  if (!coef.allFinite()) return 0.0;
+  // The quadric's own departure from flatness: its fitted heights minus the plane that
+  // best fits those heights.
+  Eigen::Matrix3d pta = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d ptb = Eigen::Vector3d::Zero();
+  std::vector<double> fitted(uvd.size());
+  for (std::size_t k = 0; k < uvd.size(); ++k) {
+    fitted[k] = row(uvd[k]).dot(coef);
+    const Eigen::Vector3d r(1.0, uvd[k].x(), uvd[k].y());
+    pta.noalias() += r * r.transpose();
+    ptb.noalias() += r * fitted[k];
+  }
+  const Eigen::Vector3d lin = pta.ldlt().solve(ptb);
+  std::vector<double> dev(uvd.size());
+  for (std::size_t k = 0; k < uvd.size(); ++k)
+    dev[k] = fitted[k] - Eigen::Vector3d(1.0, uvd[k].x(), uvd[k].y()).dot(lin);
+  std::sort(dev.begin(), dev.end());
+  const std::size_t lo = dev.size() / 50;
+  return dev[dev.size() - 1 - lo] - dev[lo];
+}
+
+}  // namespace cloudshape::pipeline::detail

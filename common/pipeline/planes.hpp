@@ -1,0 +1,58 @@
+// Stage 2 (thesis 3.1): planes by iterative RANSAC, called with a coarse then a fine
+// threshold; each plane's boundary points; the lines common to two planes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/kdtree.hpp"
+#include "geometry/plane.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::pipeline {
+
+struct DetectedPlane {
+  geometry::Plane plane;                // normal oriented away from the cloud's centroid
+  std::vector<std::uint32_t> inliers;   // indices into the cloud
+  std::vector<std::uint32_t> boundary;  // inliers on the border of the patch
+  // A true flat face: the patch shows no curvature beyond the noise. False for the
+  // tangent strips RANSAC cuts out of curved surfaces (thesis Fig. 4.3).
+  bool is_face = false;
+  double curvature_sagitta = 0.0;       // deviation of a quadric fit from the plane, in resolutions
+};
+
+struct PlaneLine {
+  geometry::Line line;
+  double t_min = 0.0;  // extent along line.direction where both planes' boundaries lie
+  double t_max = 0.0;
+  std::uint32_t plane_a = 0;
+  std::uint32_t plane_b = 0;
+
+  Point start() const { return line.point + t_min * line.direction; }
+  Point end() const { return line.point + t_max * line.direction; }
+};
+
+struct PlaneSegmentation {
+  std::vector<DetectedPlane> planes;
+  std::vector<PlaneLine> lines;
+  std::vector<std::int32_t> labels;  // per point: index of its plane, or -1
+};
+
+PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
+                                 const config::PlanesConfig& cfg);
+
+// Lines where two planes meet, clipped to where both planes' boundary points lie near.
+std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
+                                        const std::vector<DetectedPlane>& planes,
+                                        double resolution, const config::PlanesConfig& cfg);
+
+// The `candidates` (points of plane `label`) on the border of their patch: points whose
+// in-plane angular gap between neighbours of the same plane exceeds cfg.boundary_gap_degrees.
+std::vector<std::uint32_t> find_plane_boundary(const geometry::KdTree& tree,
+                                               const std::vector<std::int32_t>& labels,
+                                               std::int32_t label, const geometry::Plane& plane,
+                                               const std::vector<std::uint32_t>& candidates,
+                                               const config::PlanesConfig& cfg);
+
+}  // namespace cloudshape::pipeline

@@ -1,0 +1,81 @@
+#include "pipeline/preprocess.hpp"
+
+#include <cmath>
+#include <numeric>
+
+#include "geometry/kdtree.hpp"
+#include "geometry/pca.hpp"
+#include "geometry/voxel_grid.hpp"
+
+namespace cloudshape::pipeline {
+
+PointList remove_statistical_outliers(const PointList& points, std::size_t k, double stddev_factor,
+                                      std::size_t* removed) {
+  if (removed) *removed = 0;
+  if (points.size() <= k + 1 || k == 0) return points;
+  const geometry::KdTree tree(points);
+  std::vector<double> mean_dist(points.size());
+  std::vector<std::uint32_t> idx;
+  std::vector<double> d2;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    tree.knn(points[i], k + 1, idx, &d2);
+    double s = 0.0;
+    for (std::size_t j = 1; j < d2.size(); ++j) s += std::sqrt(d2[j]);
+    mean_dist[i] = s / static_cast<double>(std::max<std::size_t>(1, d2.size() - 1));
+  }
+  const double mean =
+      std::accumulate(mean_dist.begin(), mean_dist.end(), 0.0) / static_cast<double>(points.size());
+  double var = 0.0;
+  for (double m : mean_dist) var += (m - mean) * (m - mean);
+  const double limit = mean + stddev_factor * std::sqrt(var / static_cast<double>(points.size()));
+  PointList kept;
+  kept.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (mean_dist[i] <= limit) kept.push_back(points[i]);
+  if (removed) *removed = points.size() - kept.size();
+  return kept;
+}
+
+PointList smooth_flat_regions(const PointList& points, std::size_t k, double max_curvature) {
+  if (points.size() <= k || k < 3) return points;
+  const geometry::KdTree tree(points);
+  PointList out = points;
+  std::vector<std::uint32_t> idx;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    tree.knn(points[i], k, idx);
+    const geometry::Pca pca = geometry::compute_pca(points, idx);
+    if (pca.surface_variation() >= max_curvature) continue;
+    const Eigen::Vector3d n = pca.eigenvectors.col(0);
+    out[i] = points[i] - n.dot(points[i] - pca.centroid) * n;
+  }
+  return out;
+}
+
+PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg) {
+  PreprocessedCloud out;
+  if (raw.empty()) return out;
+  const double diagonal = geometry::bounding_box(raw).diagonal();
+  double voxel = cfg.voxel_divisions > 0.0 ? diagonal / cfg.voxel_divisions : 0.0;
+  PointList pts = geometry::voxel_grid_downsample(raw, voxel);
+  // Dense clouds: widen the voxel until the point budget holds; the area a voxel
+  // covers scales with its edge squared, hence the square root.
+  for (int attempt = 0; attempt < 4 && cfg.max_points > 0 &&
+                        pts.size() > static_cast<std::size_t>(cfg.max_points);
+       ++attempt) {
+    voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
+            std::sqrt(static_cast<double>(pts.size()) / static_cast<double>(cfg.max_points)) * 1.02;
+    pts = geometry::voxel_grid_downsample(raw, voxel);
+  }
+  out.voxel_size = voxel;
+  if (cfg.outlier_removal)
+    pts = remove_statistical_outliers(pts, static_cast<std::size_t>(cfg.outlier_neighbours),
+                                      cfg.outlier_stddev, &out.outliers_removed);
+  if (cfg.smoothing)
+    pts = smooth_flat_regions(pts, static_cast<std::size_t>(cfg.smoothing_neighbours),
+                              cfg.smoothing_max_curvature);
+  out.resolution = geometry::mean_nearest_neighbour_distance(pts);
+  out.points = std::move(pts);
+  return out;
+}
+
+}  // namespace cloudshape::pipeline

@@ -1,0 +1,32 @@
+// Stage 1: from a raw cloud to a filtered one: voxel grid (centroid per voxel),
+// statistical outlier removal, edge-preserving smoothing, and the resolution.
+#pragma once
+
+#include <cstddef>
+
+#include "config/stage_configs.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::pipeline {
+
+struct PreprocessedCloud {
+  PointList points;
+  double resolution = 0.0;  // mean nearest-neighbour distance of `points`
+  double voxel_size = 0.0;  // edge of the voxel grid actually used
+  std::size_t outliers_removed = 0;
+};
+
+// Non-finite points must have been dropped by the reader. Never throws on content:
+// too few points simply give a small (possibly empty) result.
+PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg);
+
+// Statistical outlier removal: drops points whose mean distance to their k nearest
+// neighbours exceeds the cloud's mean by `stddev_factor` standard deviations.
+PointList remove_statistical_outliers(const PointList& points, std::size_t k, double stddev_factor,
+                                      std::size_t* removed = nullptr);
+
+// Projects every point whose k-neighbourhood is flatter than `max_curvature` onto that
+// neighbourhood's least-squares plane; corners and edges are left as they are.
+PointList smooth_flat_regions(const PointList& points, std::size_t k, double max_curvature);
+
+}  // namespace cloudshape::pipeline

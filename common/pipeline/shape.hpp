@@ -1,0 +1,29 @@
+// The solid classes cloudshape recognises and their names on the wire and in JSON
+// (INTERFACE.md): names never change meaning, new shapes get new names.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace cloudshape::pipeline {
+
+enum class Shape { unknown, box, tetrahedron, pentagonal_prism, cone, cylinder, sphere };
+
+inline constexpr std::array<Shape, 6> kSolidShapes = {Shape::box,  Shape::tetrahedron,
+                                                      Shape::pentagonal_prism, Shape::cone,
+                                                      Shape::cylinder, Shape::sphere};
+
+inline std::string shape_name(Shape s) {
+  switch (s) {
+    case Shape::box: return "box";
+    case Shape::tetrahedron: return "tetrahedron";
+    case Shape::pentagonal_prism: return "pentagonal_prism";
+    case Shape::cone: return "cone";
+    case Shape::cylinder: return "cylinder";
+    case Shape::sphere: return "sphere";
+    case Shape::unknown: break;
+  }
+  return "unknown";
+}
+
+}  // namespace cloudshape::pipeline

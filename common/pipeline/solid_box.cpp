@@ -1,0 +1,111 @@
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "geometry/pca.hpp"
+#include "pipeline/solids.hpp"
+
+namespace cloudshape::pipeline {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Best rotation taking the unit axes onto the face normals assigned to them (orthogonal
+// Procrustes): uses every face, not only the two that seeded the frame.
+Eigen::Matrix3d refine_frame(const Eigen::Matrix3d& frame,
+                             const std::vector<const DetectedPlane*>& faces, double cos_parallel) {
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (const DetectedPlane* f : faces) {
+    for (int k = 0; k < 3; ++k) {
+      const double c = f->plane.normal.dot(frame.col(k));
+      if (std::abs(c) < cos_parallel) continue;
+      const double w = static_cast<double>(f->inliers.size());
+      m.noalias() += w * (c > 0 ? 1.0 : -1.0) * f->plane.normal * Eigen::Vector3d::Unit(k).transpose();
+    }
+  }
+  Eigen::JacobiSVD<Eigen::Matrix3d> svd(m, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d r = svd.matrixU() * svd.matrixV().transpose();
+  if (r.determinant() < 0) {
+    Eigen::Matrix3d u = svd.matrixU();
+    u.col(2) = -u.col(2);
+    r = u * svd.matrixV().transpose();
+  }
+  return r.allFinite() ? r : frame;
+}
+
+}  // namespace
+
+std::optional<FittedSolid> fit_box(const SolveInput& in) {
+  const auto faces = detail::faces_by_size(in.planes);
+  if (faces.empty()) return std::nullopt;
+  const double sin_perp = std::sin(in.cfg.perpendicular_degrees * kPi / 180.0);
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
+
+  const Eigen::Vector3d a0 = faces[0]->plane.normal;
+  Eigen::Vector3d a1 = Eigen::Vector3d::Zero();
+  for (std::size_t k = 1; k < faces.size() && a1.isZero(); ++k) {
+    const Eigen::Vector3d n = faces[k]->plane.normal;
+    if (std::abs(n.dot(a0)) < sin_perp) a1 = (n - n.dot(a0) * a0).normalized();
+  }
+  if (a1.isZero()) {
+    // One face seen: the in-plane spread of the points gives the other two directions.
+    const geometry::Pca pca = geometry::compute_pca(in.cloud);
+    Eigen::Vector3d best = pca.eigenvectors.col(2);
+    best -= best.dot(a0) * a0;
+    if (best.norm() < 1e-6) return std::nullopt;
+    a1 = best.normalized();
+  }
+  Eigen::Matrix3d frame;
+  frame.col(0) = a0;
+  frame.col(1) = a1;
+  frame.col(2) = a0.cross(a1);
+  frame = refine_frame(frame, faces, cos_parallel);
+
+  std::array<double, 3> lo{}, hi{};
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d axis = frame.col(k);
+    lo[k] = std::numeric_limits<double>::infinity();
+    hi[k] = -lo[k];
+    for (const Point& p : in.cloud) {
+      lo[k] = std::min(lo[k], p.dot(axis));
+      hi[k] = std::max(hi[k], p.dot(axis));
+    }
+    // A face seen on a side is a better bound than the extreme point: it averages
+    // thousands of points instead of trusting one.
+    double face_lo = std::numeric_limits<double>::infinity(), face_hi = -face_lo;
+    for (const DetectedPlane* f : faces) {
+      const double c = f->plane.normal.dot(axis);
+      if (std::abs(c) < cos_parallel) continue;
+      const double pos = detail::face_position(in.cloud, *f, axis);
+      if (c > 0) face_hi = std::max(face_hi, pos);
+      else face_lo = std::min(face_lo, pos);
+    }
+    if (std::isfinite(face_lo)) lo[k] = face_lo;
+    if (std::isfinite(face_hi)) hi[k] = face_hi;
+  }
+  std::array<int, 3> order{0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
+
+  FittedSolid out;
+  out.shape = Shape::box;
+  const char* names[3] = {"length", "width", "height"};
+  Eigen::Vector3d half;
+  for (int r = 0; r < 3; ++r) {
+    const int k = order[r];
+    out.dimensions.emplace_back(names[r], hi[k] - lo[k]);
+    out.axes.row(r) = frame.col(k).transpose();
+    out.center += 0.5 * (lo[k] + hi[k]) * frame.col(k);
+    half[r] = 0.5 * (hi[k] - lo[k]);
+  }
+  out.axes.row(2) = out.axes.row(0).cross(out.axes.row(1));
+  const Eigen::Matrix3d axes = out.axes;
+  const Point c = out.center;
+  out.signed_distance = [axes, c, half](const Point& p) {
+    const Eigen::Vector3d local = axes * (p - c);
+    return (local.cwiseAbs() - half).maxCoeff();
+  };
+  return out;
+}
+
+}  // namespace cloudshape::pipeline

@@ -1,0 +1,79 @@
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/kdtree.hpp"
+#include "geometry/pca.hpp"
+#include "pipeline/solids.hpp"
+
+namespace cloudshape::pipeline {
+
+std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {
+  switch (shape) {
+    case Shape::box: return fit_box(in);
+    case Shape::tetrahedron: return fit_tetrahedron(in);
+    case Shape::pentagonal_prism: return fit_pentagonal_prism(in);
+    case Shape::cylinder: return fit_cylinder(in);
+    case Shape::cone: return fit_cone(in);
+    case Shape::sphere: return fit_sphere_solid(in);
+    case Shape::unknown: break;
+  }
+  return std::nullopt;
+}
+
+namespace detail {
+
+std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes) {
+  std::vector<const DetectedPlane*> faces;
+  for (const auto& p : planes.planes)
+    if (p.is_face) faces.push_back(&p);
+  std::stable_sort(faces.begin(), faces.end(), [](const DetectedPlane* a, const DetectedPlane* b) {
+    return a->inliers.size() > b->inliers.size();
+  });
+  return faces;
+}
+
+double face_position(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis) {
+  double sum = 0.0;
+  for (std::uint32_t i : face.inliers) sum += cloud[i].dot(axis);
+  return face.inliers.empty() ? 0.0 : sum / static_cast<double>(face.inliers.size());
+}
+
+Eigen::Vector3d axis_from_normals(const PointList& cloud, const std::vector<std::uint32_t>& points) {
+  if (points.size() < 8) return Eigen::Vector3d::UnitZ();
+  const geometry::KdTree tree(cloud);
+  const std::size_t step = std::max<std::size_t>(1, points.size() / 1500);
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  std::vector<std::uint32_t> nb;
+  for (std::size_t k = 0; k < points.size(); k += step) {
+    tree.knn(cloud[points[k]], 12, nb);
+    const Eigen::Vector3d n = geometry::compute_pca(cloud, nb).eigenvectors.col(0);
+    m.noalias() += n * n.transpose();
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
+  return solver.eigenvectors().col(0).normalized();
+}
+
+Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis) {
+  Eigen::Vector3d u, v;
+  geometry::plane_basis(axis, u, v);
+  Eigen::Matrix3d out;
+  out.row(0) = axis.normalized().transpose();
+  out.row(1) = u.transpose();
+  out.row(2) = axis.normalized().cross(u).transpose();
+  return out;
+}
+
+std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
+                                            const std::vector<const DetectedPlane*>& faces) {
+  std::vector<char> on_face(cloud.size(), 0);
+  for (const DetectedPlane* f : faces)
+    for (std::uint32_t i : f->inliers) on_face[i] = 1;
+  std::vector<std::uint32_t> out;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (!on_face[i]) out.push_back(static_cast<std::uint32_t>(i));
+  return out;
+}
+
+}  // namespace detail
+}  // namespace cloudshape::pipeline

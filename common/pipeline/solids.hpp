@@ -1,0 +1,67 @@
+// One fitter per solid behind one small interface: each turns the planes, key-points
+// and points into the solid's dimensions, pose and a signed distance for verification.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "pipeline/classify.hpp"
+#include "pipeline/keypoints.hpp"
+#include "pipeline/planes.hpp"
+#include "pipeline/shape.hpp"
+
+namespace cloudshape::pipeline {
+
+struct SolveInput {
+  const PointList& cloud;
+  const PlaneSegmentation& planes;
+  const KeypointSet& keypoints;
+  const Classification& classification;
+  double resolution;
+  const config::SolveConfig& cfg;
+};
+
+struct FittedSolid {
+  Shape shape = Shape::unknown;
+  std::vector<std::pair<std::string, double>> dimensions;  // INTERFACE.md names and order
+  Point center = Point::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows as INTERFACE.md's axes[0..2]
+  // Signed distance of a point to the solid's surface (negative inside); exact on the
+  // surface, a lower bound away from it, which is all verification needs.
+  std::function<double(const Point&)> signed_distance;
+};
+
+std::optional<FittedSolid> fit_box(const SolveInput& in);
+std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in);
+std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in);
+std::optional<FittedSolid> fit_cylinder(const SolveInput& in);
+std::optional<FittedSolid> fit_cone(const SolveInput& in);
+std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
+
+std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in);
+
+namespace detail {
+
+// True flat faces, largest first.
+std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes);
+
+// Mean of p.axis over the plane's inliers: where the face sits along `axis`.
+double face_position(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis);
+
+// The direction all surface normals of the given points are perpendicular to (the axis
+// of a cylinder or, nearly, a cone), from per-point normals on a subsample.
+Eigen::Vector3d axis_from_normals(const PointList& cloud, const std::vector<std::uint32_t>& points);
+
+// Rows: axis, then two unit vectors completing a right-handed orthonormal frame.
+Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
+
+// Points that lie on none of the given faces.
+std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
+                                            const std::vector<const DetectedPlane*>& faces);
+
+}  // namespace detail
+}  // namespace cloudshape::pipeline

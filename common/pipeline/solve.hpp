@@ -1,0 +1,21 @@
+// Stage 5 (thesis 3.3): dimensions and 6-DoF pose of the classified solid, every
+// candidate verified against the points; confidence from how well it explains them.
+#pragma once
+
+#include "config/stage_configs.hpp"
+#include "pipeline/classify.hpp"
+#include "pipeline/keypoints.hpp"
+#include "pipeline/planes.hpp"
+#include "pipeline/result.hpp"
+
+namespace cloudshape::pipeline {
+
+// Fits each candidate of the classification, measures the share of points within
+// cfg.inlier_distance resolutions of its surface, and reports the class the key-points
+// chose unless another solid explains clearly more. `unknown` with a reason when none
+// explains at least cfg.min_inlier_fraction of the points.
+ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
+                          const KeypointSet& keypoints, const Classification& classification,
+                          double resolution, const config::SolveConfig& cfg);
+
+}  // namespace cloudshape::pipeline
