@@ -11,12 +11,13 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("voxel_divisions", c.voxel_divisions);
   f("max_points", c.max_points);
   f("min_points", c.min_points);
+  f("isolated_voxel_neighbours", c.isolated_voxel_neighbours);
+  f("statistical_outliers", c.statistical_outliers);
+  f("outlier_neighbours", c.outlier_neighbours);
+  f("outlier_stddev", c.outlier_stddev);
   f("smoothing", c.smoothing);
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
-  f("outlier_removal", c.outlier_removal);
-  f("outlier_neighbours", c.outlier_neighbours);
-  f("outlier_stddev", c.outlier_stddev);
 }
 
 template <class F>
@@ -51,6 +52,8 @@ template <class F>
 void visit_fields(ClassifyConfig& c, F&& f) {
   f("border_curvature", c.border_curvature);
   f("corner_gap_degrees", c.corner_gap_degrees);
+  f("inner_exclusion", c.inner_exclusion);
+  f("apex_candidates", c.apex_candidates);
   f("sphere_max_rms", c.sphere_max_rms);
   f("sphere_max_face_fraction", c.sphere_max_face_fraction);
   f("polyhedron_face_fraction", c.polyhedron_face_fraction);

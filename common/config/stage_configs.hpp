@@ -11,12 +11,19 @@ struct PreprocessConfig {
   double voxel_divisions = 200.0;       // voxel edge = bounding-box diagonal / this
   std::int64_t max_points = 12000;      // the voxel grows until at most this many remain
   std::int64_t min_points = 30;         // fewer usable points: the cloud holds no solid
-  bool smoothing = true;                // project flat neighbourhoods on their local plane
+  // Radius outlier filter at the voxel's scale: a voxel with fewer occupied neighbours
+  // (of 26) is dropped. 0 disables it.
+  std::int64_t isolated_voxel_neighbours = 2;
+  // Statistical outlier removal (k-NN mean distance beyond mean + stddev * sigma); slower,
+  // for clouds with clustered outliers.
+  bool statistical_outliers = false;
+  std::int64_t outlier_neighbours = 8;
+  double outlier_stddev = 3.0;
+  // Edge-preserving smoothing: flat neighbourhoods projected on their local plane. Off by
+  // default because the voxel centroids already average the sensor noise of every voxel.
+  bool smoothing = false;
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
-  bool outlier_removal = true;          // statistical outlier removal before everything else
-  std::int64_t outlier_neighbours = 8;
-  double outlier_stddev = 3.0;          // drop points whose mean neighbour distance exceeds mean + this * stddev
 };
 
 struct PlanesConfig {
@@ -29,7 +36,7 @@ struct PlanesConfig {
   std::int64_t max_rejected_in_row = 6;  // stop after this many non-face planes in a row
   std::int64_t ransac_iterations = 60;   // hypotheses per plane
   std::int64_t score_samples = 1500;     // points that score a hypothesis before the full count
-  double sample_radius = 12.0;           // hypothesis triples drawn within this many resolutions
+  double sample_radius = 8.0;            // hypothesis triples drawn within this many resolutions
   double connectivity = 2.5;             // inliers farther than this (resolutions) from the main patch are dropped
   std::int64_t boundary_neighbours = 12;
   double boundary_gap_degrees = 100.0;   // in-plane angular gap that makes a point a boundary point
@@ -40,14 +47,16 @@ struct PlanesConfig {
 };
 
 struct KeypointsConfig {
-  std::int64_t neighbourhood = 16;      // points per key-point neighbourhood (thesis 3.2.2)
+  std::int64_t neighbourhood = 32;      // points per key-point neighbourhood (thesis 3.2.2 used 16; 32 types corners of voxelised clouds more reliably)
   std::int64_t pursuit_max_steps = 200;
   double merge_distance = 3.0;          // key-points closer than this (resolutions) are one
 };
 
 struct ClassifyConfig {
   double border_curvature = 0.02;        // surface variation below this: border (thesis 3.2.2)
-  double corner_gap_degrees = 215.0;     // projected angular gap above this: corner (thesis 3.2.3)
+  double corner_gap_degrees = 210.0;     // projected angular gap above this: corner (thesis 3.2.3)
+  double inner_exclusion = 0.5;          // neighbours nearer than this share of the farthest are ignored in the gap
+  std::int64_t apex_candidates = 1;      // the key-point's nearest samples also tried as the wedge's tip
   double sphere_max_rms = 0.02;          // sphere test: fit RMS / radius below this
   double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
   double polyhedron_face_fraction = 0.85;  // faces covering this fraction: a polyhedron

@@ -1,8 +1,9 @@
 #include "geometry/voxel_grid.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
+#include "geometry/detail/flat_hash.hpp"
 #include "geometry/kdtree.hpp"
 
 namespace cloudshape::geometry {
@@ -18,37 +19,67 @@ Bounds bounding_box(const PointList& points) {
   return b;
 }
 
-PointList voxel_grid_downsample(const PointList& points, double voxel_size) {
+PointList voxel_grid_downsample(const PointList& points, double voxel_size,
+                                int min_occupied_neighbours, std::size_t* isolated) {
+  if (isolated) *isolated = 0;
   if (!(voxel_size > 0.0) || points.empty()) return points;
   const Bounds b = bounding_box(points);
   const double inv = 1.0 / voxel_size;
-  // 21 bits per axis; a grid finer than that would not reduce anything anyway.
+  // 21 bits per axis (one voxel of margin each side for the neighbour test).
   const Eigen::Vector3d extent = (b.max - b.min) * inv;
-  if (extent.maxCoeff() >= double(1 << 21)) return points;
+  if (!(extent.maxCoeff() < double((1 << 21) - 3))) return points;
+  auto key_of = [](std::uint64_t ix, std::uint64_t iy, std::uint64_t iz) {
+    return (ix << 42) | (iy << 21) | iz;
+  };
 
   struct Acc {
     Eigen::Vector3d sum = Eigen::Vector3d::Zero();
     std::uint32_t count = 0;
+    std::uint64_t key = 0;
   };
-  std::unordered_map<std::uint64_t, std::uint32_t> slot;
-  slot.reserve(points.size() / 2);
+  detail::CellMap slot(points.size() / 4 + 16);
   std::vector<Acc> acc;
-  acc.reserve(points.size() / 2);
+  acc.reserve(points.size() / 4 + 16);
   for (const Point& p : points) {
     const Eigen::Vector3d q = (p - b.min) * inv;
-    const auto ix = static_cast<std::uint64_t>(q.x());
-    const auto iy = static_cast<std::uint64_t>(q.y());
-    const auto iz = static_cast<std::uint64_t>(q.z());
-    const std::uint64_t key = (ix << 42) | (iy << 21) | iz;
-    const auto [it, inserted] = slot.try_emplace(key, static_cast<std::uint32_t>(acc.size()));
-    if (inserted) acc.emplace_back();
-    Acc& a = acc[it->second];
-    a.sum += p;
-    ++a.count;
+    const std::uint64_t key = key_of(static_cast<std::uint64_t>(q.x()) + 1,
+                                     static_cast<std::uint64_t>(q.y()) + 1,
+                                     static_cast<std::uint64_t>(q.z()) + 1);
+    bool inserted = false;
+    const std::uint32_t s = slot.find_or_insert(key, static_cast<std::uint32_t>(acc.size()), inserted);
+    if (inserted) {
+      acc.emplace_back();
+      acc.back().key = key;
+    }
+    acc[s].sum += p;
+    ++acc[s].count;
   }
+  constexpr std::uint64_t kMask = (1u << 21) - 1;
+  std::vector<char> lonely(acc.size(), 0);
+  std::size_t lonely_count = 0;
+  if (min_occupied_neighbours > 0) {
+    for (std::size_t v = 0; v < acc.size(); ++v) {
+      const std::uint64_t key = acc[v].key;
+      const std::uint64_t ix = key >> 42, iy = (key >> 21) & kMask, iz = key & kMask;
+      int occupied = 0;
+      for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz)
+            if ((dx || dy || dz) &&
+                slot.find(key_of(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
+              ++occupied;
+      lonely[v] = occupied < min_occupied_neighbours;
+      lonely_count += lonely[v];
+    }
+    // Many lonely voxels mean the grid is finer than the cloud's own sampling, not that
+    // the cloud is full of outliers: then nothing is dropped.
+    if (lonely_count * 4 > acc.size()) std::fill(lonely.begin(), lonely.end(), 0), lonely_count = 0;
+  }
+  if (isolated) *isolated = lonely_count;
   PointList out;
-  out.reserve(acc.size());
-  for (const Acc& a : acc) out.push_back(a.sum / static_cast<double>(a.count));
+  out.reserve(acc.size() - lonely_count);
+  for (std::size_t v = 0; v < acc.size(); ++v)
+    if (!lonely[v]) out.push_back(acc[v].sum / static_cast<double>(acc[v].count));
   return out;
 }
 

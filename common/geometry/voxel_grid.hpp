@@ -7,8 +7,12 @@
 namespace cloudshape::geometry {
 
 // Replaces the points of each cubic voxel of edge `voxel_size` by their centroid.
-// voxel_size <= 0 returns the input unchanged.
-PointList voxel_grid_downsample(const PointList& points, double voxel_size);
+// voxel_size <= 0 returns the input unchanged. With min_occupied_neighbours > 0, voxels
+// with fewer occupied voxels among their 26 neighbours are dropped as isolated (a radius
+// outlier filter at the voxel's scale) and counted in *isolated; unless more than a quarter
+// of the voxels are isolated, which means the grid is finer than the cloud's sampling.
+PointList voxel_grid_downsample(const PointList& points, double voxel_size,
+                                int min_occupied_neighbours = 0, std::size_t* isolated = nullptr);
 
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.

@@ -11,6 +11,29 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Angular gap around `tip` of the neighbourhood (thesis 3.2.3): 180 deg for an edge (the
+// projected neighbourhood is a half-plane), more for a corner (a wedge). Measured in 3-D
+// around the inward axis from the tip to the centroid, because at sharp corners
+// lambda0 ~ lambda1 and the thesis' e1 projection plane is arbitrary. Only the outer ring
+// counts: the nearest neighbours' directions mostly show the sampling offset.
+double wedge_gap(const PointList& cloud, const std::vector<std::uint32_t>& neighbourhood,
+                 std::uint32_t tip, const Point& centroid, double inner_exclusion) {
+  const Point& k = cloud[tip];
+  const Eigen::Vector3d inward = centroid - k;
+  if (!(inward.norm() > 0.0)) return kPi;
+  const Eigen::Vector3d axis = inward.normalized();
+  double reach = 0.0;
+  for (std::uint32_t j : neighbourhood) reach = std::max(reach, (cloud[j] - k).norm());
+  double widest = 0.0;
+  for (std::uint32_t j : neighbourhood) {
+    const Eigen::Vector3d d = cloud[j] - k;
+    const double len = d.norm();
+    if (j == tip || len < inner_exclusion * reach) continue;
+    widest = std::max(widest, std::acos(std::clamp(d.dot(axis) / len, -1.0, 1.0)));
+  }
+  return 2.0 * kPi - 2.0 * widest;
+}
+
 void add_unique(std::vector<Shape>& list, Shape s) {
   if (s != Shape::unknown && std::find(list.begin(), list.end(), s) == list.end()) list.push_back(s);
 }
@@ -51,23 +74,15 @@ TypedKeypoint type_keypoint(const PointList& cloud, const Keypoint& keypoint,
     out.type = KeypointType::border;
     return out;
   }
-  // Project on the plane normal to e1 (spanned by e0 and e2): an edge becomes a half-plane
-  // with the key-point on its straight side (gap ~180 deg), a corner a wedge (gap > 180).
-  const Eigen::Vector3d e0 = pca.eigenvectors.col(0);
-  const Eigen::Vector3d e2 = pca.eigenvectors.col(2);
-  const Point& k = cloud[keypoint.index];
-  std::vector<double> angles;
-  for (std::uint32_t j : keypoint.neighbourhood) {
-    if (j == keypoint.index) continue;
-    const Eigen::Vector3d d = cloud[j] - k;
-    const double x = d.dot(e0), y = d.dot(e2);
-    if (x * x + y * y > 0.0) angles.push_back(std::atan2(y, x));
-  }
-  double gap = 2.0 * kPi;
-  if (angles.size() >= 2) {
-    std::sort(angles.begin(), angles.end());
-    gap = angles.front() + 2.0 * kPi - angles.back();
-    for (std::size_t i = 1; i < angles.size(); ++i) gap = std::max(gap, angles[i] - angles[i - 1]);
+  // The key-point is the sample that pursuit reached, often a resolution or two short of
+  // the true vertex; its nearest neighbours are tried as the wedge's tip as well and the
+  // widest gap counts, so a vertex is not missed because no sample sits exactly on it.
+  const auto tips = std::min<std::size_t>(keypoint.neighbourhood.size(),
+                                          static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.apex_candidates)));
+  double gap = 0.0;
+  for (std::size_t t = 0; t < tips; ++t) {
+    const std::uint32_t tip = keypoint.neighbourhood[t];
+    gap = std::max(gap, wedge_gap(cloud, keypoint.neighbourhood, tip, pca.centroid, cfg.inner_exclusion));
   }
   out.gap_degrees = gap * 180.0 / kPi;
   out.type = out.gap_degrees > cfg.corner_gap_degrees ? KeypointType::corner : KeypointType::edge;

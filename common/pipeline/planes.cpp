@@ -37,7 +37,10 @@ std::optional<geometry::Plane> best_hypothesis(const PointList& cloud,
     subset.reserve(samples);
     for (std::size_t i = 0; i < samples; ++i) subset.push_back(remaining[pick(rng)]);
   }
-  const double threshold = cfg.coarse_threshold * resolution;
+  // Scored at the fine threshold: a tangent strip of a curved surface is as wide as the
+  // threshold allows (width ~ sqrt(threshold)), a true face is not, so the fine score ranks
+  // faces above strips and caps are found before the curved side is cut up.
+  const double threshold = cfg.fine_threshold * resolution;
   std::optional<geometry::Plane> best;
   std::size_t best_score = 0;
   std::vector<std::uint32_t> near;

@@ -56,20 +56,39 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   if (raw.empty()) return out;
   const double diagonal = geometry::bounding_box(raw).diagonal();
   double voxel = cfg.voxel_divisions > 0.0 ? diagonal / cfg.voxel_divisions : 0.0;
-  PointList pts = geometry::voxel_grid_downsample(raw, voxel);
-  // Dense clouds: widen the voxel until the point budget holds; the area a voxel
-  // covers scales with its edge squared, hence the square root.
-  for (int attempt = 0; attempt < 4 && cfg.max_points > 0 &&
-                        pts.size() > static_cast<std::size_t>(cfg.max_points);
+  const int min_neighbours = static_cast<int>(cfg.isolated_voxel_neighbours);
+  const auto budget = static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.max_points));
+  // Dense clouds: widen the voxel until the point budget holds; the area a voxel covers
+  // scales with its edge squared, hence the square root. The size is first searched on
+  // a sparse subsample (it can only occupy fewer voxels than the whole cloud), so the
+  // whole cloud is usually gridded once.
+  if (cfg.max_points > 0 && raw.size() > budget) {
+    PointList sparse;
+    const std::size_t stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
+    for (std::size_t i = 0; i < raw.size(); i += stride) sparse.push_back(raw[i]);
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      const std::size_t n = geometry::voxel_grid_downsample(sparse, voxel).size();
+      if (n <= budget) break;
+      voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
+              std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;
+    }
+  }
+  std::size_t isolated = 0;
+  PointList pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated);
+  for (int attempt = 0; attempt < 3 && cfg.max_points > 0 && pts.size() > budget + budget / 5;
        ++attempt) {
     voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
-            std::sqrt(static_cast<double>(pts.size()) / static_cast<double>(cfg.max_points)) * 1.02;
-    pts = geometry::voxel_grid_downsample(raw, voxel);
+            std::sqrt(static_cast<double>(pts.size()) / static_cast<double>(budget)) * 1.02;
+    pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated);
   }
   out.voxel_size = voxel;
-  if (cfg.outlier_removal)
+  out.outliers_removed = isolated;
+  if (cfg.statistical_outliers) {
+    std::size_t removed = 0;
     pts = remove_statistical_outliers(pts, static_cast<std::size_t>(cfg.outlier_neighbours),
-                                      cfg.outlier_stddev, &out.outliers_removed);
+                                      cfg.outlier_stddev, &removed);
+    out.outliers_removed += removed;
+  }
   if (cfg.smoothing)
     pts = smooth_flat_regions(pts, static_cast<std::size_t>(cfg.smoothing_neighbours),
                               cfg.smoothing_max_curvature);

@@ -1,5 +1,5 @@
-// Stage 1: from a raw cloud to a filtered one: voxel grid (centroid per voxel),
-// statistical outlier removal, edge-preserving smoothing, and the resolution.
+// Stage 1: from a raw cloud to a filtered one: voxel grid (centroid per voxel) with an
+// isolated-voxel outlier filter, optional statistical outlier removal and smoothing, the resolution.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +13,7 @@ struct PreprocessedCloud {
   PointList points;
   double resolution = 0.0;  // mean nearest-neighbour distance of `points`
   double voxel_size = 0.0;  // edge of the voxel grid actually used
-  std::size_t outliers_removed = 0;
+  std::size_t outliers_removed = 0;  // isolated voxels plus statistical outliers
 };
 
 // Non-finite points must have been dropped by the reader. Never throws on content:

@@ -18,29 +18,62 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   base_centroid /= static_cast<double>(base.inliers.size());
   const auto& rim = base.boundary.size() >= 6 ? base.boundary : base.inliers;
   const auto circle = geometry::fit_circle_in_plane(in.cloud, rim, base_centroid, axis);
-  const Point centre = circle ? circle->center : base_centroid;
+  const Point start = circle ? circle->center : base_centroid;
 
   // Along the side, the distance to the axis falls linearly with the height above the
-  // base: r = R - (R/H) h. A regression over every side point gives R and H.
+  // base: r = R - k h. Gauss-Newton over the axis position (s, t in the base plane), R and
+  // k uses every side point; the rim circle only gives the start.
   const auto side = detail::points_off_faces(in.cloud, {&base});
   if (side.size() < 10) return std::nullopt;
   double h_max = 0.0;
-  for (std::uint32_t i : side) h_max = std::max(h_max, (in.cloud[i] - centre).dot(axis));
+  for (std::uint32_t i : side) h_max = std::max(h_max, (in.cloud[i] - start).dot(axis));
   if (!(h_max > 0.0)) return std::nullopt;
-  Eigen::Matrix2d ata = Eigen::Matrix2d::Zero();
-  Eigen::Vector2d atb = Eigen::Vector2d::Zero();
+  std::vector<std::uint32_t> used;
   for (std::uint32_t i : side) {
-    const Eigen::Vector3d d = in.cloud[i] - centre;
-    const double h = d.dot(axis);
-    if (h < 0.05 * h_max || h > 0.95 * h_max) continue;
-    const double r = (d - h * axis).norm();
-    const Eigen::Vector2d row(1.0, -h);
-    ata.noalias() += row * row.transpose();
-    atb.noalias() += row * r;
+    const double h = (in.cloud[i] - start).dot(axis);
+    if (h > 0.05 * h_max && h < 0.95 * h_max) used.push_back(i);
   }
-  const Eigen::Vector2d sol = ata.ldlt().solve(atb);
-  const double radius = sol(0), slope = sol(1);
-  if (!(radius > 0.0) || !(slope > 0.0) || !sol.allFinite()) return std::nullopt;
+  if (used.size() < 10) return std::nullopt;
+  const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
+  const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
+  Point centre = start;
+  double radius = circle ? circle->radius : 0.0, slope = 0.0;
+  {
+    Eigen::Matrix2d ata = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d atb = Eigen::Vector2d::Zero();
+    for (std::uint32_t i : used) {
+      const Eigen::Vector3d d = in.cloud[i] - centre;
+      const double h = d.dot(axis);
+      const Eigen::Vector2d row(1.0, -h);
+      ata.noalias() += row * row.transpose();
+      atb.noalias() += row * (d - h * axis).norm();
+    }
+    const Eigen::Vector2d sol = ata.ldlt().solve(atb);
+    radius = sol(0);
+    slope = sol(1);
+  }
+  for (int it = 0; it < 10; ++it) {
+    Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d jtr = Eigen::Vector4d::Zero();
+    for (std::uint32_t i : used) {
+      const Eigen::Vector3d d = in.cloud[i] - centre;
+      const double h = d.dot(axis);
+      const Eigen::Vector3d w = d - h * axis;
+      const double r = w.norm();
+      if (r < 1e-12) continue;
+      const Eigen::Vector4d j(-w.dot(u) / r, -w.dot(v) / r, -1.0, h);
+      const double e = r - (radius - slope * h);
+      jtj.noalias() += j * j.transpose();
+      jtr.noalias() += j * e;
+    }
+    const Eigen::Vector4d step = jtj.ldlt().solve(-jtr);
+    if (!step.allFinite()) return std::nullopt;
+    centre += step(0) * u + step(1) * v;
+    radius += step(2);
+    slope += step(3);
+    if (step.norm() < 1e-12 * (radius + 1.0)) break;
+  }
+  if (!(radius > 0.0) || !(slope > 0.0)) return std::nullopt;
   const double height = radius / slope;
 
   FittedSolid out;

@@ -69,9 +69,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.dimensions = s.dimensions;
   out.center = s.center;
   out.axes = s.axes;
-  // Agreement between the key-point class and the best-explaining solid is itself evidence.
-  const double agreement = s.shape == classification.shape ? 1.0 : 0.9;
-  out.confidence = std::clamp(chosen->second * agreement, 0.0, 1.0);
+  out.confidence = std::clamp(chosen->second, 0.0, 1.0);
   return out;
 }
 
