@@ -1,0 +1,29 @@
+// Writes point clouds as PCD (ascii, binary, binary_compressed), PLY (ascii, binary) or XYZ.
+// Everything written reads back through the readers in this module.
+#pragma once
+
+#include <string>
+
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::io {
+
+enum class PcdEncoding { ascii, binary, binary_compressed };
+
+// x y z as F4 floats, or F8 doubles with double_precision. Non-finite points are written as
+// they are (the readers drop and count them). Throws std::runtime_error naming the path.
+void write_pcd(const std::string& path, const PointList& points, PcdEncoding encoding,
+               bool double_precision = false);
+
+// binary selects binary_little_endian. Vertex properties are float, or double with double_precision.
+void write_ply(const std::string& path, const PointList& points, bool binary, bool double_precision = false);
+
+// One "x y z" line per point, each value with the shortest text that reads back exactly.
+void write_xyz(const std::string& path, const PointList& points);
+
+// The exact bytes the writers put in a file, for in-memory transport and for tests.
+std::string encode_pcd(const PointList& points, PcdEncoding encoding, bool double_precision = false);
+std::string encode_ply(const PointList& points, bool binary, bool double_precision = false);
+std::string encode_xyz(const PointList& points);
+
+}  // namespace cloudshape::io

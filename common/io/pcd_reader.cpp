@@ -1,0 +1,197 @@
+// Reads PCD point clouds (DATA ascii, binary or binary_compressed) into x/y/z points.
+// x, y and z may sit at any field position among other fields; non-finite points are dropped and counted.
+#include "io/pcd_reader.hpp"
+
+#include <lzf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+
+#include "io/detail/binary_scalar.hpp"
+#include "io/detail/input.hpp"
+#include "io/detail/parse_number.hpp"
+#include "io/detail/pcd_header.hpp"
+#include "io/detail/text_lines.hpp"
+#include "io/read_error.hpp"
+
+namespace cloudshape::io {
+namespace {
+
+using detail::at_byte;
+using detail::at_line;
+using detail::PcdHeader;
+using detail::Scalar;
+
+// LZF's densest code is a 3-byte back reference that expands to 264 bytes; a block
+// claiming more than that ratio is corrupt, and is rejected before its buffer is allocated.
+constexpr std::uint64_t kMaxLzfRatio = 88;
+
+void add_point(CloudFile& out, double x, double y, double z) {
+  if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z)) {
+    out.points.emplace_back(x, y, z);
+  } else {
+    ++out.non_finite_dropped;
+  }
+}
+
+void read_ascii(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
+  // Every value needs at least one character and one separator, which bounds the
+  // reservation by the bytes actually present rather than by the declared count.
+  const std::size_t present = (data.size() - h.data_offset) / (2 * h.values_per_point) + 1;
+  out.points.reserve(std::min(h.points, present));
+
+  detail::LineCursor lines(data, h.data_offset, h.data_line);
+  std::string_view line;
+  std::size_t rows = 0;
+  while (lines.next(line)) {
+    if (detail::is_blank(line)) continue;
+    const std::string place = at_line(lines.line_number());
+    if (rows == h.points) {
+      throw ReadError(name, place, "header/data count mismatch: more data rows than the " +
+                                       std::to_string(h.points) + " POINTS declared");
+    }
+    detail::TokenCursor tokens(line);
+    double xyz[3] = {0.0, 0.0, 0.0};
+    std::size_t seen = 0;
+    for (std::size_t f = 0; f < h.fields.size(); ++f) {
+      const int axis = f == h.xyz[0] ? 0 : f == h.xyz[1] ? 1 : f == h.xyz[2] ? 2 : -1;
+      for (std::size_t k = 0; k < h.fields[f].count; ++k, ++seen) {
+        std::string_view token;
+        if (!tokens.next(token)) {
+          throw ReadError(name, place, "too few values: expected " + std::to_string(h.values_per_point) +
+                                           ", found " + std::to_string(seen));
+        }
+        double value = 0.0;
+        if (!detail::parse_double(token, value)) {
+          throw ReadError(name, place, "non-numeric value " + detail::quoted(token) + " in field " +
+                                           detail::quoted(h.fields[f].name));
+        }
+        if (axis >= 0) xyz[axis] = detail::as_declared(value, h.fields[f].type);
+      }
+    }
+    if (!tokens.at_end()) {
+      throw ReadError(name, place, "too many values: expected " + std::to_string(h.values_per_point));
+    }
+    ++rows;
+    add_point(out, xyz[0], xyz[1], xyz[2]);
+  }
+  if (rows < h.points) {
+    throw ReadError(name, at_line(lines.next_line_number()),
+                    "header/data count mismatch: POINTS declares " + std::to_string(h.points) +
+                        ", found " + std::to_string(rows) + " data rows");
+  }
+}
+
+// `stride` is the distance between consecutive values of one field: the record size for
+// the interleaved binary layout, the scalar size for the per-field compressed layout.
+void extract_points(const unsigned char* const starts[3], const std::size_t strides[3], const Scalar types[3],
+                    std::size_t count, CloudFile& out) {
+  out.points.reserve(count);
+  if (types[0] == Scalar::f32 && types[1] == Scalar::f32 && types[2] == Scalar::f32) {
+    for (std::size_t i = 0; i < count; ++i) {
+      add_point(out, detail::load_raw<float>(starts[0] + i * strides[0]),
+                detail::load_raw<float>(starts[1] + i * strides[1]),
+                detail::load_raw<float>(starts[2] + i * strides[2]));
+    }
+    return;
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    add_point(out, detail::load_scalar(starts[0] + i * strides[0], types[0]),
+              detail::load_scalar(starts[1] + i * strides[1], types[1]),
+              detail::load_scalar(starts[2] + i * strides[2], types[2]));
+  }
+}
+
+void read_binary(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
+  const std::size_t available = data.size() - h.data_offset;
+  if (available < h.data_bytes) {
+    throw ReadError(name, at_byte(data.size()),
+                    "truncated binary data (expected " + std::to_string(h.data_bytes) +
+                        " bytes of points, found " + std::to_string(available) + ")");
+  }
+  const auto* base = reinterpret_cast<const unsigned char*>(data.data()) + h.data_offset;
+  const unsigned char* starts[3];
+  std::size_t strides[3];
+  Scalar types[3];
+  for (int a = 0; a < 3; ++a) {
+    const auto& field = h.fields[h.xyz[a]];
+    starts[a] = base + field.offset;
+    strides[a] = h.point_size;
+    types[a] = field.type;
+  }
+  extract_points(starts, strides, types, h.points, out);
+}
+
+void read_compressed(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
+  const std::size_t available = data.size() - h.data_offset;
+  if (available < 8) {
+    throw ReadError(name, at_byte(data.size()),
+                    "truncated binary_compressed data (missing the 8-byte size prefix)");
+  }
+  const auto* prefix = reinterpret_cast<const unsigned char*>(data.data()) + h.data_offset;
+  const auto compressed = detail::load_raw<std::uint32_t>(prefix);
+  const auto uncompressed = detail::load_raw<std::uint32_t>(prefix + 4);
+  if (uncompressed != h.data_bytes) {
+    throw ReadError(name, at_byte(h.data_offset + 4),
+                    "compressed size mismatch: block holds " + std::to_string(uncompressed) +
+                        " bytes, the header's " + std::to_string(h.points) + " points need " +
+                        std::to_string(h.data_bytes));
+  }
+  if (compressed > available - 8) {
+    throw ReadError(name, at_byte(data.size()),
+                    "truncated compressed data (expected " + std::to_string(compressed) + " bytes, found " +
+                        std::to_string(available - 8) + ")");
+  }
+  if (uncompressed == 0) return;
+  if (uncompressed > kMaxLzfRatio * compressed) {
+    throw ReadError(name, at_byte(h.data_offset + 8),
+                    "corrupt LZF stream: " + std::to_string(compressed) + " bytes cannot expand to " +
+                        std::to_string(uncompressed));
+  }
+  const std::unique_ptr<unsigned char[]> soa(new unsigned char[uncompressed]);
+  const unsigned int produced = lzf_decompress(prefix + 8, compressed, soa.get(), uncompressed);
+  if (produced != uncompressed) {
+    throw ReadError(name, at_byte(h.data_offset + 8),
+                    "corrupt LZF stream (decompressed " + std::to_string(produced) + " of " +
+                        std::to_string(uncompressed) + " bytes)");
+  }
+  // Per-field layout: all values of the first field, then all of the second, ...;
+  // a field's block therefore starts at points * (its offset in an interleaved record).
+  const unsigned char* starts[3];
+  std::size_t strides[3];
+  Scalar types[3];
+  for (int a = 0; a < 3; ++a) {
+    const auto& field = h.fields[h.xyz[a]];
+    starts[a] = soa.get() + h.points * field.offset;
+    strides[a] = detail::scalar_size(field.type);
+    types[a] = field.type;
+  }
+  extract_points(starts, strides, types, h.points, out);
+}
+
+}  // namespace
+
+CloudFile read_pcd_buffer(std::string_view data, const std::string& name, const ReadLimits& limits) {
+  detail::check_buffer(data, name, limits);
+  const PcdHeader header = detail::parse_pcd_header(data, name, limits);
+  CloudFile out;
+  switch (header.data) {
+    case detail::PcdData::ascii:
+      out.format = "pcd-ascii";
+      read_ascii(data, name, header, out);
+      break;
+    case detail::PcdData::binary:
+      out.format = "pcd-binary";
+      read_binary(data, name, header, out);
+      break;
+    case detail::PcdData::binary_compressed:
+      out.format = "pcd-binary_compressed";
+      read_compressed(data, name, header, out);
+      break;
+  }
+  return out;
+}
+
+}  // namespace cloudshape::io
