@@ -39,7 +39,7 @@ struct PlanesConfig {
   double sample_radius = 8.0;            // hypothesis triples drawn within this many resolutions
   double connectivity = 2.5;             // inliers farther than this (resolutions) from the main patch are dropped
   std::int64_t boundary_neighbours = 12;
-  double boundary_gap_degrees = 100.0;   // in-plane angular gap that makes a point a boundary point
+  double boundary_gap_degrees = 150.0;   // in-plane angular gap that makes a point a boundary point
   double line_distance = 2.0;            // boundary points within this (resolutions) support a line
   std::int64_t line_min_support = 4;     // support points each plane must give a line
   double min_line_angle_degrees = 15.0;  // planes closer to parallel than this make no line

@@ -1,0 +1,50 @@
+// k-NN and radius queries against brute force.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+#include "geometry/kdtree.hpp"
+
+namespace cloudshape::geometry {
+namespace {
+
+TEST(KdTree, KnnMatchesBruteForce) {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-1, 1);
+  PointList pts;
+  for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  const KdTree tree(pts);
+  std::vector<std::uint32_t> idx;
+  std::vector<double> d2;
+  for (int q = 0; q < 50; ++q) {
+    const Point query(u(rng), u(rng), u(rng));
+    tree.knn(query, 16, idx, &d2);
+    std::vector<double> all;
+    for (const auto& p : pts) all.push_back((p - query).squaredNorm());
+    std::sort(all.begin(), all.end());
+    ASSERT_EQ(idx.size(), 16u);
+    for (int k = 0; k < 16; ++k) EXPECT_DOUBLE_EQ(d2[k], all[k]);
+  }
+}
+
+TEST(KdTree, RadiusFindsExactlyThePointsInside) {
+  PointList pts;
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 10; ++y) pts.emplace_back(x, y, 0);
+  const KdTree tree(pts);
+  std::vector<std::uint32_t> idx;
+  tree.radius(Point(5, 5, 0), 1.01, idx);
+  EXPECT_EQ(idx.size(), 5u);  // the point and its four axis neighbours
+}
+
+TEST(KdTree, KIsClampedToTheCloud) {
+  const PointList pts{Point(0, 0, 0), Point(1, 0, 0)};
+  const KdTree tree(pts);
+  std::vector<std::uint32_t> idx;
+  tree.knn(Point(0, 0, 0), 10, idx);
+  EXPECT_EQ(idx.size(), 2u);
+}
+
+}  // namespace
+}  // namespace cloudshape::geometry

@@ -1,0 +1,50 @@
+// Voxel grid centroids, its isolated-voxel filter, and the resolution estimate.
+#include <gtest/gtest.h>
+
+#include "geometry/voxel_grid.hpp"
+
+namespace cloudshape::geometry {
+namespace {
+
+PointList grid(int n, double step) {
+  PointList pts;
+  for (int x = 0; x < n; ++x)
+    for (int y = 0; y < n; ++y) pts.emplace_back(x * step, y * step, 0.0);
+  return pts;
+}
+
+TEST(VoxelGrid, ReplacesEachVoxelByItsCentroid) {
+  // 4 points in one voxel, 1 in another.
+  const PointList pts{Point(0.1, 0.1, 0.1), Point(0.3, 0.1, 0.1), Point(0.1, 0.3, 0.1),
+                      Point(0.3, 0.3, 0.1), Point(1.5, 0.1, 0.1)};
+  const PointList out = voxel_grid_downsample(pts, 1.0);
+  ASSERT_EQ(out.size(), 2u);
+  const bool first_is_cluster = out[0].x() < 1.0;
+  EXPECT_LT((out[first_is_cluster ? 0 : 1] - Point(0.2, 0.2, 0.1)).norm(), 1e-12);
+}
+
+TEST(VoxelGrid, NonPositiveSizeKeepsTheCloud) {
+  const PointList pts = grid(5, 1.0);
+  EXPECT_EQ(voxel_grid_downsample(pts, 0.0).size(), pts.size());
+}
+
+TEST(VoxelGrid, IsolatedVoxelsAreDroppedOnlyWhenRare) {
+  PointList pts = grid(40, 0.1);  // dense sheet: every voxel has neighbours
+  pts.emplace_back(10.0, 10.0, 10.0);  // a stray point far away
+  std::size_t isolated = 0;
+  const PointList out = voxel_grid_downsample(pts, 0.1, 2, &isolated);
+  EXPECT_EQ(isolated, 1u);
+  EXPECT_EQ(out.size(), 1600u);
+  // Sampling sparser than the grid: everything would look isolated, so nothing is dropped.
+  const PointList sparse = grid(10, 1.0);
+  EXPECT_EQ(voxel_grid_downsample(sparse, 0.1, 2, &isolated).size(), sparse.size());
+  EXPECT_EQ(isolated, 0u);
+}
+
+TEST(Resolution, MeanNearestNeighbourOfARegularGrid) {
+  EXPECT_NEAR(mean_nearest_neighbour_distance(grid(30, 0.25)), 0.25, 1e-12);
+  EXPECT_EQ(mean_nearest_neighbour_distance(PointList{Point(0, 0, 0)}), 0.0);
+}
+
+}  // namespace
+}  // namespace cloudshape::geometry

@@ -1,0 +1,101 @@
+// Stage 5: each solid's dimensions and pose against the analytic truth (1% / 1 degree).
+#include <gtest/gtest.h>
+
+#include "pipeline/solve.hpp"
+#include "stage_fixtures.hpp"
+
+namespace cloudshape::pipeline {
+namespace {
+
+using testing::stage;
+
+constexpr double kRelTol = 0.01;
+
+ObjectResult solve(const testing::StagedCloud& s) {
+  return solve_object(s.pre.points, s.planes, s.keypoints, s.classification, s.pre.resolution,
+                      config::SolveConfig{});
+}
+
+void expect_dimensions(const ObjectResult& got, const synth::SolidSpec& truth) {
+  ASSERT_EQ(got.dimensions.size(), truth.dimensions.size());
+  for (std::size_t i = 0; i < got.dimensions.size(); ++i) {
+    EXPECT_EQ(got.dimensions[i].first, truth.dimensions[i].first);
+    EXPECT_NEAR(got.dimensions[i].second, truth.dimensions[i].second,
+                kRelTol * truth.dimensions[i].second)
+        << got.dimensions[i].first;
+  }
+}
+
+double axis_angle_deg(const Eigen::Vector3d& a, const Eigen::Vector3d& b, bool signed_axis) {
+  const double c = signed_axis ? a.normalized().dot(b.normalized()) : std::abs(a.normalized().dot(b.normalized()));
+  return std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / 3.14159265358979323846;
+}
+
+TEST(Solve, Box) {
+  const auto s = stage(synth::ShapeKind::box, {3.0, 2.0, 1.0});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "box");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.01 * 3.0);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_LT(axis_angle_deg(r.axes.row(k), s.spec.pose.axes.row(k), false), 1.0) << "axis " << k;
+  EXPECT_GT(r.confidence, 0.95);
+}
+
+TEST(Solve, Tetrahedron) {
+  const auto s = stage(synth::ShapeKind::tetrahedron, {2.0});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "tetrahedron");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.02);
+}
+
+TEST(Solve, PentagonalPrism) {
+  const auto s = stage(synth::ShapeKind::pentagonal_prism, {1.0, 2.5});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "pentagonal_prism");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT(axis_angle_deg(r.axes.row(0), s.spec.pose.axes.row(0), false), 1.0);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.025);
+}
+
+TEST(Solve, CylinderCentreIsTheAxisMidpoint) {
+  const auto s = stage(synth::ShapeKind::cylinder, {1.0, 3.0});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "cylinder");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT(axis_angle_deg(r.axes.row(0), s.spec.pose.axes.row(0), false), 1.0);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.03);
+}
+
+TEST(Solve, ConeAxisPointsFromBaseToApex) {
+  const auto s = stage(synth::ShapeKind::cone, {1.0, 2.0});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "cone");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT(axis_angle_deg(r.axes.row(0), s.spec.pose.axes.row(0), true), 1.0);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.02);  // centre of the base circle
+}
+
+TEST(Solve, Sphere) {
+  const auto s = stage(synth::ShapeKind::sphere, {1.5});
+  const auto r = solve(s);
+  ASSERT_EQ(r.shape, "sphere");
+  expect_dimensions(r, s.spec);
+  EXPECT_LT((r.center - s.spec.pose.center).norm(), 0.015);
+  EXPECT_NEAR(r.axes.determinant(), 1.0, 1e-9);
+}
+
+TEST(Solve, AxesAreOrthonormal) {
+  for (auto kind : synth::all_shape_kinds()) {
+    const auto s = stage(kind, kind == synth::ShapeKind::box ? std::vector<double>{3, 2, 1}
+                               : synth::dimension_names(kind).size() == 2 ? std::vector<double>{1, 2}
+                                                                           : std::vector<double>{1});
+    const auto r = solve(s);
+    EXPECT_LT((r.axes * r.axes.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-9)
+        << synth::to_string(kind);
+  }
+}
+
+}  // namespace
+}  // namespace cloudshape::pipeline
