@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds build/ (Release), makes the sample clouds and runs the whole
+# recognition pipeline on them: one JSON line per cloud on stdout (progress on stderr).
+#
+#   tools/demo.sh
+#
+# Samples (in build/samples/, regenerated deterministically on every run):
+#   synthetic/  one cloud per shape from cloudshape-synth suite (fixed seed)
+#   real/       the real meshes of ../shared/data/real (ycb *.obj *.ply, ravens *.obj) sampled
+#               at 20000 points with cloudshape-synth mesh
+# plus, read as they are, ../shared/data/real/pcl/*.pcd and spherecalib/*.xyz.
+# Environment: CLOUDSHAPE_BUILD_DIR, CLOUDSHAPE_JOBS, CLOUDSHAPE_REAL_DATA (default
+# ../shared/data/real beside the repository).
+# Exit status: that of cloudshape-recognize (0 when every cloud was read).
+set -euo pipefail
+# shellcheck disable=SC2034  # read by lib/deps.sh
+CLOUDSHAPE_LOG_TAG=demo.sh
+# shellcheck source-path=SCRIPTDIR source=lib/deps.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
+
+case "${1:-}" in
+  "") ;;
+  -h|--help) sed -n '2,16s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  *) cs_die "unknown argument: $1 (see --help)" ;;
+esac
+
+SEED=7
+SYNTH_POINTS=20000
+REAL_POINTS=20000
+real_data="${CLOUDSHAPE_REAL_DATA:-$CLOUDSHAPE_REPO/../shared/data/real}"
+
+cd "$CLOUDSHAPE_REPO"
+cs_ensure_packages
+cs_configure_and_build
+
+bin="$CLOUDSHAPE_BUILD_DIR/bin"
+for tool in cloudshape-synth cloudshape-recognize; do
+  [[ -x "$bin/$tool" ]] || cs_die "$bin/$tool was not built"
+done
+samples="$CLOUDSHAPE_BUILD_DIR/samples"
+mkdir -p "$samples"
+
+clouds=()
+add_clouds() {  # appends the cloud files (.pcd .ply .xyz .txt) found in a folder, sorted
+  local f
+  while IFS= read -r -d '' f; do clouds+=("$f"); done < <(
+    find "$1" -maxdepth 1 -type f \( -name '*.pcd' -o -name '*.ply' -o -name '*.xyz' \
+      -o -name '*.txt' \) -print0 | sort -z)
+}
+
+cs_log "samples: one synthetic cloud per shape ($SYNTH_POINTS points, seed $SEED)"
+rm -rf "$samples/synthetic"
+"$bin/cloudshape-synth" suite --out "$samples/synthetic" --points "$SYNTH_POINTS" --seed "$SEED" \
+  --count 1 >/dev/null
+add_clouds "$samples/synthetic"
+
+if [[ -d "$real_data" ]]; then
+  cs_log "samples: real meshes from $real_data ($REAL_POINTS points each)"
+  mkdir -p "$samples/real"
+  shopt -s nullglob
+  for mesh in "$real_data"/ycb/*.obj "$real_data"/ycb/*.ply "$real_data"/ravens/*.obj; do
+    name="$(basename "${mesh%.*}")"
+    out="$samples/real/$name.pcd"
+    if [[ ! -s "$out" || "$mesh" -nt "$out" || "$bin/cloudshape-synth" -nt "$out" ]]; then
+      "$bin/cloudshape-synth" mesh "$mesh" --points "$REAL_POINTS" --seed "$SEED" -o "$out" \
+        >/dev/null || cs_die "cloudshape-synth mesh failed on $mesh"
+    fi
+    clouds+=("$out")
+  done
+  real_clouds=("$real_data"/pcl/*.pcd "$real_data"/spherecalib/*.xyz)
+  shopt -u nullglob
+  clouds+=("${real_clouds[@]}")
+else
+  cs_log "samples: no real data at $real_data (skipped)"
+fi
+
+((${#clouds[@]} > 0)) || cs_die "no sample clouds were made"
+cs_log "recognize: ${#clouds[@]} clouds, one JSON line each"
+status=0
+"$bin/cloudshape-recognize" "${clouds[@]}" || status=$?
+if ((status == 0)); then
+  cs_log "done: ${#clouds[@]} clouds recognised"
+else
+  cs_log "cloudshape-recognize exited with status $status"
+fi
+exit "$status"

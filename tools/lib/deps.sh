@@ -1,0 +1,83 @@
+# Shared by tools/test.sh and tools/demo.sh (source it, don't run it):
+# the Debian packages cloudshape needs, installing only what is missing, and the build.
+# shellcheck shell=bash
+
+# The one list of Debian 12 packages needed to build, test and run cloudshape.
+CLOUDSHAPE_DEB_PACKAGES=(
+  build-essential cmake ninja-build ccache pkg-config
+  libeigen3-dev libnanoflann-dev libyaml-cpp-dev libspdlog-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
+  libfastrtps-dev libfastcdr-dev fastddsgen
+)
+
+CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+# build/ per INTERFACE.md; CLOUDSHAPE_BUILD_DIR overrides it (e.g. for a second, private tree).
+CLOUDSHAPE_BUILD_DIR="${CLOUDSHAPE_BUILD_DIR:-$CLOUDSHAPE_REPO/build}"
+CLOUDSHAPE_JOBS="${CLOUDSHAPE_JOBS:-$(nproc 2>/dev/null || echo 2)}"
+CLOUDSHAPE_LOG_TAG="${CLOUDSHAPE_LOG_TAG:-cloudshape}"
+
+cs_log() { printf '[%s] %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; }
+cs_die() { printf '[%s] ERROR: %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; exit 1; }
+
+# Prints the packages of CLOUDSHAPE_DEB_PACKAGES that are not installed, one per line.
+cs_missing_packages() {
+  local pkg status
+  for pkg in "${CLOUDSHAPE_DEB_PACKAGES[@]}"; do
+    status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
+    [[ "$status" == "install ok installed" ]] || printf '%s\n' "$pkg"
+  done
+}
+
+# Installs the missing packages non-interactively; touches apt only when something is missing.
+cs_ensure_packages() {
+  command -v dpkg-query >/dev/null 2>&1 || cs_die "dpkg-query not found: this script expects Debian 12"
+  local missing
+  mapfile -t missing < <(cs_missing_packages)
+  if ((${#missing[@]} == 0)); then
+    cs_log "dependencies: all ${#CLOUDSHAPE_DEB_PACKAGES[@]} Debian packages present"
+    return 0
+  fi
+  cs_log "dependencies: installing ${missing[*]}"
+  local -a sudo_cmd=()
+  if [[ "$(id -u)" -ne 0 ]]; then
+    command -v sudo >/dev/null 2>&1 || cs_die "not root and no sudo: install ${missing[*]} first"
+    sudo_cmd=(sudo -E)
+    # Without a terminal (CI) sudo must not wait for a password.
+    [[ -t 0 ]] || sudo_cmd+=(-n)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -q || cs_die "apt-get update failed"
+  "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends \
+    -o Dpkg::Options::=--force-confdef -o Dpkg::Options::=--force-confold "${missing[@]}" \
+    || cs_die "apt-get install failed"
+  mapfile -t missing < <(cs_missing_packages)
+  ((${#missing[@]} == 0)) || cs_die "still missing after install: ${missing[*]}"
+}
+
+# Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR. CLOUDSHAPE_CMAKE_ARGS (space-separated)
+# is passed to the configure step, e.g. "-DCLOUDSHAPE_SANITIZE=ON".
+cs_configure_and_build() {
+  local -a gen=() extra=()
+  read -r -a extra <<<"${CLOUDSHAPE_CMAKE_ARGS:-}"
+  local cache="$CLOUDSHAPE_BUILD_DIR/CMakeCache.txt"
+  # Keep an existing tree's generator (switching generators in place makes cmake fail).
+  if [[ ! -f "$cache" ]] && command -v ninja >/dev/null 2>&1; then
+    gen=(-G Ninja)
+  fi
+  mkdir -p "$CLOUDSHAPE_BUILD_DIR"
+  # ccache keeps its cache in the build tree when the home directory is not writable (CI).
+  if [[ -z "${CCACHE_DIR:-}" && ! -w "${HOME:-/nonexistent}" ]]; then
+    export CCACHE_DIR="$CLOUDSHAPE_BUILD_DIR/.ccache"
+  fi
+  local log="$CLOUDSHAPE_BUILD_DIR/configure.log"
+  cs_log "configure: $CLOUDSHAPE_BUILD_DIR (Release)"
+  if ! cmake -S "$CLOUDSHAPE_REPO" -B "$CLOUDSHAPE_BUILD_DIR" "${gen[@]}" \
+      -DCMAKE_BUILD_TYPE=Release "${extra[@]}" >"$log" 2>&1; then
+    cat "$log" >&2
+    cs_die "cmake configure failed (log: $log)"
+  fi
+  cs_log "build: $CLOUDSHAPE_JOBS parallel jobs"
+  # Build progress goes to stderr so that stdout carries only results (demo.sh: JSON lines).
+  cmake --build "$CLOUDSHAPE_BUILD_DIR" --parallel "$CLOUDSHAPE_JOBS" >&2 || cs_die "build failed"
+}

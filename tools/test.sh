@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds build/ (Release) and runs the tests with ctest.
+# Exit status 0 only if the build and every selected test pass. Idempotent.
+#
+#   tools/test.sh            # every test except those labelled "long"
+#   tools/test.sh --long     # every test
+#   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R)
+#
+# Environment: CLOUDSHAPE_BUILD_DIR (default build/), CLOUDSHAPE_JOBS (default: all cores),
+# CLOUDSHAPE_CMAKE_ARGS (extra configure arguments),
+# CLOUDSHAPE_TEST_TIMEOUT (seconds per test, default 600).
+set -euo pipefail
+# shellcheck disable=SC2034  # read by lib/deps.sh
+CLOUDSHAPE_LOG_TAG=test.sh
+# shellcheck source-path=SCRIPTDIR source=lib/deps.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
+
+usage() { sed -n '2,11s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+
+long=0
+ctest_filter=()
+while (($#)); do
+  case "$1" in
+    --long) long=1 ;;
+    -R) [[ $# -ge 2 ]] || cs_die "-R needs a regex"; ctest_filter=(-R "$2"); shift ;;
+    -h|--help) usage; exit 0 ;;
+    *) usage >&2; cs_die "unknown argument: $1" ;;
+  esac
+  shift
+done
+
+start=$SECONDS
+cd "$CLOUDSHAPE_REPO"
+cs_ensure_packages
+cs_configure_and_build
+
+ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error
+            -j "$CLOUDSHAPE_JOBS" --timeout "${CLOUDSHAPE_TEST_TIMEOUT:-600}" "${ctest_filter[@]}")
+if ((long)); then
+  cs_log "tests: all (ctest ${ctest_args[*]})"
+else
+  ctest_args+=(-LE long)
+  cs_log "tests: all but label 'long' (ctest ${ctest_args[*]}); --long runs everything"
+fi
+status=0
+ctest "${ctest_args[@]}" || status=$?
+elapsed=$((SECONDS - start))
+if ((status == 0)); then
+  cs_log "PASS: build and tests succeeded in ${elapsed}s"
+else
+  cs_log "FAIL: ctest exit status $status after ${elapsed}s"
+fi
+exit "$status"
