@@ -1,0 +1,193 @@
+// schema_problems(): the INTERFACE.md contract for one result object, checked key by key.
+#include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "report/result_json.hpp"
+
+namespace cloudshape::report {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+class Checker {
+ public:
+  std::vector<std::string> problems;
+
+  void add(const std::string& where, const std::string& what) {
+    problems.push_back((where.empty() ? std::string("top level") : where) + ": " + what);
+  }
+
+  // Keys exactly `required` in this order, then optionally the `optional` ones (in order).
+  bool keys(const Json& j, const std::string& where, const std::vector<std::string>& required,
+            const std::vector<std::string>& optional = {}) {
+    if (!j.is_object()) {
+      add(where, std::string("expected an object, got ") + j.type_name());
+      return false;
+    }
+    std::vector<std::string> got;
+    for (auto it = j.begin(); it != j.end(); ++it) got.push_back(it.key());
+    std::vector<std::string> want = required;
+    for (const auto& k : optional) {
+      if (j.contains(k)) want.push_back(k);
+    }
+    if (got != want) add(where, "keys are [" + list(got) + "], expected [" + list(want) + "]");
+    return true;
+  }
+
+  bool number(const Json& j, const std::string& where, double lo = -HUGE_VAL,
+              double hi = HUGE_VAL) {
+    if (!j.is_number()) {
+      add(where, std::string("expected a number, got ") + j.type_name());
+      return false;
+    }
+    const double v = j.get<double>();
+    if (!std::isfinite(v) || v < lo || v > hi) {
+      add(where, "value " + std::to_string(v) + " out of range [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "]");
+      return false;
+    }
+    return true;
+  }
+
+  bool count(const Json& j, const std::string& where) {
+    if (!j.is_number_integer() || (!j.is_number_unsigned() && j.get<long long>() < 0)) {
+      add(where, "expected an integer >= 0");
+      return false;
+    }
+    return true;
+  }
+
+  bool vec3(const Json& j, const std::string& where, Eigen::Vector3d* out) {
+    if (!j.is_array() || j.size() != 3) {
+      add(where, "expected an array of 3 numbers");
+      return false;
+    }
+    bool ok = true;
+    for (int i = 0; i < 3; ++i) {
+      ok = number(j[i], where + "[" + std::to_string(i) + "]") && ok;
+      if (ok && out) (*out)[i] = j[i].get<double>();
+    }
+    return ok;
+  }
+
+  void object(const Json& o, const std::string& w) {
+    if (!keys(o, w, {"shape", "confidence", "dimensions", "pose", "partial", "keypoints"},
+              {"reason"})) {
+      return;
+    }
+    std::string shape;
+    if (o.contains("shape")) {
+      if (!o["shape"].is_string() || o["shape"].get<std::string>().empty()) {
+        add(w + ".shape", "expected a non-empty string");
+      } else {
+        shape = o["shape"].get<std::string>();
+        const bool lower = std::all_of(shape.begin(), shape.end(),
+                                       [](char c) { return (c >= 'a' && c <= 'z') || c == '_'; });
+        if (!lower) add(w + ".shape", "'" + shape + "' is not a lower_case name");
+      }
+    }
+    if (o.contains("confidence")) number(o["confidence"], w + ".confidence", 0.0, 1.0);
+    if (o.contains("dimensions")) dimensions(o["dimensions"], w + ".dimensions", shape);
+    if (o.contains("pose")) pose(o["pose"], w + ".pose");
+    if (o.contains("partial") && !o["partial"].is_boolean()) {
+      add(w + ".partial", "expected true or false");
+    }
+    if (o.contains("keypoints") &&
+        keys(o["keypoints"], w + ".keypoints", {"corner", "edge", "border"})) {
+      for (const char* k : {"corner", "edge", "border"}) {
+        if (o["keypoints"].contains(k)) count(o["keypoints"][k], w + ".keypoints." + k);
+      }
+    }
+    if (o.contains("reason") && !o["reason"].is_string()) add(w + ".reason", "expected a string");
+  }
+
+  void dimensions(const Json& d, const std::string& w, const std::string& shape) {
+    if (!d.is_object()) {
+      add(w, "expected an object");
+      return;
+    }
+    const bool known = std::find(known_shape_names().begin(), known_shape_names().end(), shape) !=
+                       known_shape_names().end();
+    if (known) keys(d, w, dimension_names(shape));
+    for (auto it = d.begin(); it != d.end(); ++it) {
+      if (number(it.value(), w + "." + it.key()) && it.value().get<double>() <= 0.0) {
+        add(w + "." + it.key(), "a length must be > 0");
+      }
+    }
+    if (shape == "box" && d.contains("length") && d.contains("width") && d.contains("height") &&
+        d["length"].is_number() && d["width"].is_number() && d["height"].is_number()) {
+      const double l = d["length"].get<double>(), wd = d["width"].get<double>(),
+                   h = d["height"].get<double>();
+      if (!(l >= wd && wd >= h)) add(w, "box needs length >= width >= height");
+    }
+  }
+
+  void pose(const Json& p, const std::string& w) {
+    if (!keys(p, w, {"center", "axes"})) return;
+    if (p.contains("center")) vec3(p["center"], w + ".center", nullptr);
+    if (!p.contains("axes")) return;
+    const Json& a = p["axes"];
+    if (!a.is_array() || a.size() != 3) {
+      add(w + ".axes", "expected 3 arrays of 3 numbers");
+      return;
+    }
+    Eigen::Matrix3d m;
+    bool ok = true;
+    for (int i = 0; i < 3; ++i) {
+      Eigen::Vector3d row;
+      ok = vec3(a[i], w + ".axes[" + std::to_string(i) + "]", &row) && ok;
+      if (ok) m.row(i) = row.transpose();
+    }
+    if (!ok) return;
+    const double err = (m * m.transpose() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (err > 1e-6) add(w + ".axes", "not orthonormal (|A A^T - I| = " + std::to_string(err) + ")");
+  }
+
+  static std::string list(const std::vector<std::string>& v) {
+    std::string s;
+    for (const auto& k : v) s += (s.empty() ? "" : ", ") + k;
+    return s;
+  }
+};
+
+}  // namespace
+
+std::vector<std::string> schema_problems(const nlohmann::ordered_json& j) {
+  Checker c;
+  if (!c.keys(j, "",
+              {"source", "points_in", "points_used", "resolution", "objects", "timings_ms"})) {
+    return c.problems;
+  }
+  if (j.contains("source") && !j["source"].is_string()) c.add("source", "expected a string");
+  const bool in_ok = j.contains("points_in") && c.count(j["points_in"], "points_in");
+  const bool used_ok = j.contains("points_used") && c.count(j["points_used"], "points_used");
+  if (in_ok && used_ok &&
+      j["points_used"].get<unsigned long long>() > j["points_in"].get<unsigned long long>()) {
+    c.add("points_used", "larger than points_in");
+  }
+  if (j.contains("resolution")) c.number(j["resolution"], "resolution", 0.0);
+  if (j.contains("objects")) {
+    if (!j["objects"].is_array()) {
+      c.add("objects", "expected an array");
+    } else {
+      for (std::size_t i = 0; i < j["objects"].size(); ++i) {
+        c.object(j["objects"][i], "objects[" + std::to_string(i) + "]");
+      }
+    }
+  }
+  if (j.contains("timings_ms")) {
+    const std::vector<std::string> stages = {"preprocess", "planes", "keypoints",
+                                             "classify",   "solve",  "total"};
+    if (c.keys(j["timings_ms"], "timings_ms", stages)) {
+      for (const auto& s : stages) {
+        if (j["timings_ms"].contains(s)) c.number(j["timings_ms"][s], "timings_ms." + s, 0.0);
+      }
+    }
+  }
+  return c.problems;
+}
+
+}  // namespace cloudshape::report

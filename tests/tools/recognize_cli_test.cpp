@@ -1,0 +1,220 @@
+// cloudshape-recognize as a user runs it: exit codes, one JSON line per readable file on
+// stdout, one "cloudshape-recognize: <file>: <problem>" line on stderr per unreadable file.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "process.hpp"
+#include "report/result_json.hpp"
+#include "synth/random_solid.hpp"
+#include "synth/sample_solid.hpp"
+
+namespace cloudshape {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+using testing::lines_of;
+using testing::ProcessResult;
+using testing::run_process;
+
+const std::string kBin = CLOUDSHAPE_RECOGNIZE_BIN;
+const std::string kPrefix = "cloudshape-recognize: ";
+
+PointList sample(synth::ShapeKind kind, std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const synth::SolidSpec spec = synth::random_solid(kind, rng, 40.0);
+  return synth::sample_solid_surface(spec, n, rng);
+}
+
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+void write_xyz(const fs::path& path, const PointList& points) {
+  std::ofstream f(path);
+  f.precision(17);
+  for (const auto& p : points) f << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+}
+
+// ascii PCD; every `nan_every`-th point (if > 0) is written as NaN.
+void write_pcd(const fs::path& path, const PointList& points, std::size_t nan_every) {
+  std::ofstream f(path);
+  f.precision(9);
+  f << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\n"
+       "TYPE F F F\nCOUNT 1 1 1\nWIDTH "
+    << points.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << points.size()
+    << "\nDATA ascii\n";
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (nan_every > 0 && i % nan_every == 0) {
+      f << "nan nan nan\n";
+    } else {
+      f << points[i].x() << ' ' << points[i].y() << ' ' << points[i].z() << '\n';
+    }
+  }
+}
+
+// ascii PLY mesh: the points as vertices plus a face element, which must be ignored.
+void write_ply_mesh(const fs::path& path, const PointList& points) {
+  std::ofstream f(path);
+  f.precision(17);
+  const std::size_t faces = points.size() / 3;
+  f << "ply\nformat ascii 1.0\nelement vertex " << points.size()
+    << "\nproperty double x\nproperty double y\nproperty double z\nelement face " << faces
+    << "\nproperty list uchar int vertex_indices\nend_header\n";
+  for (const auto& p : points) f << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  for (std::size_t i = 0; i < faces; ++i)
+    f << "3 " << 3 * i << ' ' << 3 * i + 1 << ' ' << 3 * i + 2 << '\n';
+}
+
+class RecognizeCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    std::string tmpl = (fs::temp_directory_path() / "cloudshape-recognize-test-XXXXXX").string();
+    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
+    dir_ = new fs::path(tmpl);
+    write_xyz(path("box.xyz"), sample(synth::ShapeKind::box, 6000, 1));
+    write_ply_mesh(path("cylinder.ply"), sample(synth::ShapeKind::cylinder, 6000, 2));
+    write_pcd(path("sphere_some_nan.pcd"), sample(synth::ShapeKind::sphere, 6000, 3), 10);
+    write_pcd(path("all_nan.pcd"), sample(synth::ShapeKind::sphere, 50, 4), 1);
+    write_text(path("empty.xyz"), "");
+    write_text(path("garbage.pcd"), "this is not a point cloud\n\x01\x02\x03\n");
+    write_text(path("bad.yaml"), "no_such_section:\n  threshold: 1\n");
+    write_text(path("broken.yaml"), "preprocess: [unclosed\n");
+  }
+  static void TearDownTestSuite() {
+    std::error_code ec;
+    fs::remove_all(*dir_, ec);
+    delete dir_;
+  }
+  static std::string path(const std::string& name) { return (*dir_ / name).string(); }
+
+  static ProcessResult run(std::vector<std::string> args) {
+    args.insert(args.begin(), kBin);
+    return run_process(args);
+  }
+
+  // Every stdout line must be one schema-conforming result; returns them parsed.
+  static std::vector<Json> results(const ProcessResult& r) {
+    std::vector<Json> out;
+    for (const auto& line : lines_of(r.out)) {
+      Json j;
+      EXPECT_NO_THROW(j = Json::parse(line)) << "not JSON: " << line;
+      EXPECT_EQ(report::schema_problems(j), std::vector<std::string>{}) << line;
+      EXPECT_NO_THROW(report::result_from_json(j)) << line;
+      out.push_back(j);
+    }
+    return out;
+  }
+
+  // The stderr lines that report `file` as failed.
+  static std::vector<std::string> failures_for(const ProcessResult& r, const std::string& file) {
+    std::vector<std::string> found;
+    for (const auto& line : lines_of(r.err)) {
+      if (line.rfind(kPrefix + file + ": ", 0) == 0) found.push_back(line);
+    }
+    return found;
+  }
+
+  static fs::path* dir_;
+};
+fs::path* RecognizeCli::dir_ = nullptr;
+
+TEST_F(RecognizeCli, GoodFilesGiveOneConformingLineEachInOrder) {
+  const ProcessResult r = run({path("box.xyz"), path("cylinder.ply"), path("sphere_some_nan.pcd")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  const auto res = results(r);
+  ASSERT_EQ(res.size(), 3u) << r.out;
+  // source is the file's base name.
+  EXPECT_EQ(res[0]["source"], "box.xyz");
+  EXPECT_EQ(res[1]["source"], "cylinder.ply");
+  EXPECT_EQ(res[2]["source"], "sphere_some_nan.pcd");
+  EXPECT_EQ(res[0]["points_in"].get<std::size_t>(), 6000u);
+  EXPECT_EQ(res[1]["points_in"].get<std::size_t>(), 6000u);  // vertices only, faces ignored
+  EXPECT_EQ(res[2]["points_in"].get<std::size_t>(), 5400u);  // the NaN points are dropped
+  for (const auto& j : res) EXPECT_FALSE(j["objects"].empty()) << j.dump();
+}
+
+TEST_F(RecognizeCli, UnreadableFilesAreReportedAndTheOthersStillProcessed) {
+  const std::vector<std::string> bad = {path("missing.pcd"), path("garbage.pcd"),
+                                        path("all_nan.pcd"), path("empty.xyz")};
+  const ProcessResult r =
+      run({path("box.xyz"), bad[0], bad[1], path("cylinder.ply"), bad[2], bad[3]});
+  EXPECT_EQ(r.exit_code, 2);
+  const auto res = results(r);
+  ASSERT_EQ(res.size(), 2u) << r.out;
+  EXPECT_EQ(res[0]["source"], "box.xyz");
+  EXPECT_EQ(res[1]["source"], "cylinder.ply");
+  for (const auto& file : bad) {
+    const auto lines = failures_for(r, file);
+    EXPECT_EQ(lines.size(), 1u) << "for " << file << " in stderr:\n" << r.err;
+    for (const auto& line : lines) EXPECT_GT(line.size(), kPrefix.size() + file.size() + 2);
+  }
+}
+
+TEST_F(RecognizeCli, OnlyBadFilesGiveNoStdout) {
+  const ProcessResult r = run({path("all_nan.pcd")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.out, "");
+  const auto lines = failures_for(r, path("all_nan.pcd"));
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_NE(lines[0].find("no usable points"), std::string::npos) << lines[0];
+}
+
+TEST_F(RecognizeCli, BadConfigurationStopsBeforeAnyFile) {
+  for (const std::string& cfg : {path("bad.yaml"), path("broken.yaml"), path("missing.yaml")}) {
+    const ProcessResult r = run({"--config", cfg, path("box.xyz")});
+    EXPECT_EQ(r.exit_code, 2) << cfg;
+    EXPECT_EQ(r.out, "") << cfg;
+    const auto lines = lines_of(r.err);
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_EQ(lines[0].rfind(kPrefix, 0), 0u) << lines[0];
+    EXPECT_NE(lines[0].find(cfg), std::string::npos) << lines[0];
+  }
+}
+
+TEST_F(RecognizeCli, ShippedConfigurationLoads) {
+  const fs::path shipped = fs::path(CLOUDSHAPE_SOURCE_DIR) / "config" / "pipeline.yaml";
+  if (!fs::exists(shipped)) GTEST_SKIP() << shipped << " not there yet";
+  const ProcessResult r = run({"--config", shipped.string(), path("box.xyz")});
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(results(r).size(), 1u);
+}
+
+TEST_F(RecognizeCli, PrettyPrintsTheSameObject) {
+  const ProcessResult pretty = run({"--pretty", path("box.xyz")});
+  EXPECT_EQ(pretty.exit_code, 0) << pretty.err;
+  EXPECT_GT(lines_of(pretty.out).size(), 5u);
+  Json j;
+  ASSERT_NO_THROW(j = Json::parse(pretty.out)) << pretty.out;
+  EXPECT_EQ(report::schema_problems(j), std::vector<std::string>{});
+  const ProcessResult compact = run({path("box.xyz")});
+  ASSERT_EQ(results(compact).size(), 1u);
+  Json c = Json::parse(compact.out);
+  j.erase("timings_ms");
+  c.erase("timings_ms");
+  EXPECT_EQ(j, c);  // the same answer both times, timings aside
+}
+
+TEST_F(RecognizeCli, VerboseLogsStayOffStdout) {
+  const ProcessResult r = run({"--verbose", path("box.xyz"), path("missing.pcd")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(results(r).size(), 1u);
+}
+
+TEST_F(RecognizeCli, CommandLineErrors) {
+  const ProcessResult none = run({});
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_EQ(none.out.find('{'), std::string::npos);
+  const ProcessResult unknown = run({"--no-such-flag", path("box.xyz")});
+  EXPECT_EQ(unknown.exit_code, 2);
+  const ProcessResult help = run({"--help"});
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--config"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace cloudshape

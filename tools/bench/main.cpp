@@ -1,0 +1,231 @@
+// cloudshape-bench: how long each recognition stage takes, per shape and cloud size.
+//
+//   cloudshape-bench [--sizes 10000,100000,1000000] [--shapes box,cone,...] [--reps R]
+//                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--json]
+//
+// For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
+// its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
+// warm-up times and R timed times. Reported per stage: median and p10-p90 (plus min/max in
+// --json) of the StageTimings the pipeline returns, and of the wall clock around the whole
+// call as a cross-check of `total`. Progress goes to stderr; the table or JSON to stdout.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench_stats.hpp"
+#include "config/pipeline_config.hpp"
+#include "pipeline/recognize.hpp"
+#include "synth/perturb.hpp"
+#include "synth/random_solid.hpp"
+#include "synth/sample_solid.hpp"
+
+namespace {
+
+namespace cs = cloudshape;
+using cs::bench::Summary;
+
+const std::vector<std::string> kColumns = {"preprocess", "planes", "keypoints", "classify",
+                                           "solve",      "total",  "wall"};
+
+struct Case {
+  std::string shape;
+  std::size_t points = 0;
+  int reps = 0;
+  std::map<std::string, int> recognized;  // first object's shape -> how many timed runs
+  std::map<std::string, std::vector<double>> samples;
+  std::map<std::string, Summary> summary;
+};
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> parts;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (!item.empty()) parts.push_back(item);
+  }
+  return parts;
+}
+
+std::string recognized_label(const Case& c) {
+  std::string label;
+  for (const auto& [shape, n] : c.recognized) {
+    if (!label.empty()) label += ",";
+    label += shape + (n == c.reps ? "" : ":" + std::to_string(n));
+  }
+  return label;
+}
+
+void print_table(const std::vector<Case>& cases) {
+  std::printf("%-17s %9s %5s %-17s %-7s", "shape", "points", "reps", "recognized", "ms");
+  for (const auto& col : kColumns) std::printf(" %14s", col.c_str());
+  std::printf("\n");
+  for (const auto& c : cases) {
+    std::printf("%-17s %9zu %5d %-17s %-7s", c.shape.c_str(), c.points, c.reps,
+                recognized_label(c).c_str(), "median");
+    for (const auto& col : kColumns) std::printf(" %14.2f", c.summary.at(col).median);
+    std::printf("\n%-17s %9s %5s %-17s %-7s", "", "", "", "", "p10-p90");
+    for (const auto& col : kColumns) {
+      char range[64];
+      std::snprintf(range, sizeof range, "%.2f-%.2f", c.summary.at(col).p10, c.summary.at(col).p90);
+      std::printf(" %14s", range);
+    }
+    std::printf("\n");
+  }
+}
+
+void print_json(const std::vector<Case>& cases, const nlohmann::ordered_json& settings) {
+  nlohmann::ordered_json out;
+  out["settings"] = settings;
+  out["cases"] = nlohmann::ordered_json::array();
+  for (const auto& c : cases) {
+    nlohmann::ordered_json j;
+    j["shape"] = c.shape;
+    j["points"] = c.points;
+    j["reps"] = c.reps;
+    j["recognized"] = c.recognized;
+    nlohmann::ordered_json ms;
+    for (const auto& col : kColumns) {
+      const Summary& s = c.summary.at(col);
+      ms[col] = {
+          {"median", s.median}, {"p10", s.p10}, {"p90", s.p90}, {"min", s.min}, {"max", s.max}};
+    }
+    j["timings_ms"] = ms;
+    out["cases"].push_back(j);
+  }
+  std::cout << out.dump(2) << std::endl;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Per-stage timings (median, p10-p90) of the recognition pipeline on synthetic "
+      "solids.",
+      "cloudshape-bench"};
+  std::string sizes_arg = "10000,100000,1000000";
+  std::string shapes_arg;
+  int reps_arg = 0;
+  int warmup = 1;
+  std::uint64_t seed = 42;
+  double size = 100.0;
+  double noise = 0.0;
+  std::string config_path;
+  bool json = false;
+  app.add_option("--sizes", sizes_arg, "comma-separated point counts")->capture_default_str();
+  app.add_option("--shapes", shapes_arg,
+                 "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere");
+  app.add_option("--reps", reps_arg,
+                 "timed repetitions per case (default 15 up to 100k points, 5 above)");
+  app.add_option("--warmup", warmup, "untimed runs before the timed ones")->capture_default_str();
+  app.add_option("--seed", seed, "seed of the solids and their sampling")->capture_default_str();
+  app.add_option("--solid-size", size, "largest extent of each solid")->capture_default_str();
+  app.add_option("--noise", noise, "Gaussian noise sigma, as a fraction of --solid-size")
+      ->capture_default_str();
+  app.add_option("--config", config_path,
+                 "pipeline configuration (default: config/pipeline.yaml, else built-in)");
+  app.add_flag("--json", json, "machine-readable output");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+
+  std::vector<std::size_t> sizes;
+  for (const auto& s : split(sizes_arg)) {
+    try {
+      std::size_t used = 0;
+      const unsigned long long n = std::stoull(s, &used);
+      if (used != s.size() || n == 0) throw std::invalid_argument(s);
+      sizes.push_back(static_cast<std::size_t>(n));
+    } catch (const std::exception&) {
+      std::fprintf(stderr, "cloudshape-bench: --sizes: '%s' is not a point count\n", s.c_str());
+      return 2;
+    }
+  }
+  std::vector<cs::synth::ShapeKind> kinds;
+  if (shapes_arg.empty()) {
+    kinds = cs::synth::all_shape_kinds();
+  } else {
+    for (const auto& name : split(shapes_arg)) {
+      const auto kind = cs::synth::shape_kind_from_string(name);
+      if (!kind) {
+        std::fprintf(stderr, "cloudshape-bench: --shapes: unknown shape '%s'\n", name.c_str());
+        return 2;
+      }
+      kinds.push_back(*kind);
+    }
+  }
+  if (sizes.empty() || kinds.empty() || reps_arg < 0 || warmup < 0 || size <= 0 || noise < 0) {
+    std::fprintf(stderr, "cloudshape-bench: nothing to run (check the arguments)\n");
+    return 2;
+  }
+
+  cs::config::PipelineConfig cfg;
+  if (config_path.empty()) config_path = cs::config::default_pipeline_config_path();
+  try {
+    if (!config_path.empty()) cfg = cs::config::load_pipeline_config(config_path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cloudshape-bench: %s\n", e.what());
+    return 2;
+  }
+
+  std::vector<Case> cases;
+  for (const std::size_t n : sizes) {
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+      Case c;
+      c.shape = cs::synth::to_string(kinds[k]);
+      c.points = n;
+      c.reps = reps_arg > 0 ? reps_arg : (n <= 100000 ? 15 : 5);
+
+      // Untimed: the solid (same for every size of a shape) and its sampling.
+      std::mt19937_64 solid_rng(seed * 1000003u + static_cast<std::uint64_t>(kinds[k]));
+      const cs::synth::SolidSpec spec = cs::synth::random_solid(kinds[k], solid_rng, size);
+      std::mt19937_64 sample_rng(seed ^ (n * 0x9E3779B97F4A7C15ull));
+      cs::PointList cloud = cs::synth::sample_solid_surface(spec, n, sample_rng);
+      if (noise > 0) cs::synth::add_gaussian_noise(cloud, noise * size, sample_rng);
+      const std::string source = c.shape + "-" + std::to_string(n);
+
+      for (int i = 0; i < warmup + c.reps; ++i) {
+        std::fprintf(stderr, "\rcloudshape-bench: %-17s %9zu points  %s %d/%d   ", c.shape.c_str(),
+                     n, i < warmup ? "warm-up" : "rep    ", i < warmup ? i + 1 : i - warmup + 1,
+                     i < warmup ? warmup : c.reps);
+        const auto t0 = std::chrono::steady_clock::now();
+        const cs::pipeline::RecognitionResult r = cs::pipeline::recognize_cloud(cloud, cfg, source);
+        const auto t1 = std::chrono::steady_clock::now();
+        if (i < warmup) continue;
+        const auto& t = r.timings;
+        c.samples["preprocess"].push_back(t.preprocess_ms);
+        c.samples["planes"].push_back(t.planes_ms);
+        c.samples["keypoints"].push_back(t.keypoints_ms);
+        c.samples["classify"].push_back(t.classify_ms);
+        c.samples["solve"].push_back(t.solve_ms);
+        c.samples["total"].push_back(t.total_ms);
+        c.samples["wall"].push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+        ++c.recognized[r.objects.empty() ? "none" : r.objects.front().shape];
+      }
+      for (const auto& col : kColumns) c.summary[col] = cs::bench::summarize(c.samples[col]);
+      cases.push_back(std::move(c));
+    }
+  }
+  std::fprintf(stderr, "\r%80s\r", "");
+
+  if (json) {
+    nlohmann::ordered_json settings;
+    settings["seed"] = seed;
+    settings["solid_size"] = size;
+    settings["noise"] = noise;
+    settings["warmup"] = warmup;
+    settings["config"] = config_path.empty() ? "built-in defaults" : config_path;
+    print_json(cases, settings);
+  } else {
+    print_table(cases);
+  }
+  return 0;
+}
