@@ -10,7 +10,6 @@ template <class F>
 void visit_fields(PreprocessConfig& c, F&& f) {
   f("voxel_divisions", c.voxel_divisions);
   f("max_points", c.max_points);
-  f("min_points", c.min_points);
   f("isolated_voxel_neighbours", c.isolated_voxel_neighbours);
   f("statistical_outliers", c.statistical_outliers);
   f("outlier_neighbours", c.outlier_neighbours);
@@ -50,6 +49,7 @@ void visit_fields(KeypointsConfig& c, F&& f) {
 
 template <class F>
 void visit_fields(ClassifyConfig& c, F&& f) {
+  f("min_points", c.min_points);
   f("border_curvature", c.border_curvature);
   f("corner_gap_degrees", c.corner_gap_degrees);
   f("inner_exclusion", c.inner_exclusion);

@@ -10,7 +10,6 @@ namespace cloudshape::config {
 struct PreprocessConfig {
   double voxel_divisions = 200.0;       // voxel edge = bounding-box diagonal / this
   std::int64_t max_points = 12000;      // the voxel grows until at most this many remain
-  std::int64_t min_points = 30;         // fewer usable points: the cloud holds no solid
   // Radius outlier filter at the voxel's scale: a voxel with fewer occupied neighbours
   // (of 26) is dropped. 0 disables it.
   std::int64_t isolated_voxel_neighbours = 2;
@@ -53,6 +52,7 @@ struct KeypointsConfig {
 };
 
 struct ClassifyConfig {
+  std::int64_t min_points = 30;          // fewer usable points: the cloud holds no solid
   double border_curvature = 0.02;        // surface variation below this: border (thesis 3.2.2)
   double corner_gap_degrees = 210.0;     // projected angular gap above this: corner (thesis 3.2.3)
   double inner_exclusion = 0.5;          // neighbours nearer than this share of the farthest are ignored in the gap

@@ -104,8 +104,8 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
                               const KeypointSet& keypoints, double resolution,
                               const config::ClassifyConfig& cfg) {
   Classification out;
-  if (cloud.size() < 4) {
-    out.reason = "too few points (" + std::to_string(cloud.size()) + ")";
+  if (cloud.size() < static_cast<std::size_t>(std::max<std::int64_t>(4, cfg.min_points))) {
+    out.reason = "too few points (" + std::to_string(cloud.size()) + " after filtering)";
     return out;
   }
   const geometry::Pca pca = geometry::compute_pca(cloud);

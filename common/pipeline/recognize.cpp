@@ -38,14 +38,6 @@ RecognitionResult recognize_cloud(const PointList& points, const config::Pipelin
   result.resolution = pre.resolution;
   result.timings.preprocess_ms = clock.lap_ms();
 
-  if (pre.points.size() < static_cast<std::size_t>(std::max<std::int64_t>(4, cfg.preprocess.min_points))) {
-    ObjectResult unknown;
-    unknown.reason = "too few points (" + std::to_string(pre.points.size()) + " after filtering)";
-    result.objects.push_back(unknown);
-    result.timings.total_ms = result.timings.preprocess_ms;
-    return result;
-  }
-
   const PlaneSegmentation planes = segment_planes(pre.points, pre.resolution, cfg.planes);
   result.timings.planes_ms = clock.lap_ms();
   const KeypointSet keypoints = find_keypoints(pre.points, planes, pre.resolution, cfg.keypoints);
