@@ -81,7 +81,7 @@ TEST(Classify, DegenerateCloudsHaveNoCandidateAndSayWhy) {
     EXPECT_TRUE(c.candidates.empty());
     return c.reason;
   };
-  PointList plane, line, same(10, Point(1, 2, 3));
+  PointList plane, line, same(40, Point(1, 2, 3));
   for (int i = 0; i < 20; ++i)
     for (int j = 0; j < 20; ++j) plane.emplace_back(0.1 * i, 0.1 * j, 0.5 * (0.1 * i) - 0.1 * j);
   for (int i = 0; i < 50; ++i) line.emplace_back(0.1 * i, 0.2 * i, 0.3 * i);
