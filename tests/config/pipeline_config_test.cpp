@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <unistd.h>
 
 #include "config/config_fields.hpp"
 #include "config/pipeline_config.hpp"
@@ -23,8 +24,11 @@ std::map<std::string, double> flatten(PipelineConfig cfg) {
 }
 
 std::string write_temp(const std::string& text) {
+  // ctest runs each test in its own process, in parallel: the pid keeps names apart.
+  static int counter = 0;
   const auto path = std::filesystem::temp_directory_path() /
-                    ("cloudshape_cfg_" + std::to_string(std::rand()) + ".yaml");
+                    ("cloudshape_cfg_" + std::to_string(::getpid()) + "_" +
+                     std::to_string(counter++) + ".yaml");
   std::ofstream(path) << text;
   return path.string();
 }
