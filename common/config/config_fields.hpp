@@ -24,6 +24,7 @@ void visit_fields(PlanesConfig& c, F&& f) {
   f("coarse_threshold", c.coarse_threshold);
   f("fine_threshold", c.fine_threshold);
   f("face_max_sagitta", c.face_max_sagitta);
+  f("face_min_radius_ratio", c.face_min_radius_ratio);
   f("min_plane_fraction", c.min_plane_fraction);
   f("min_plane_points", c.min_plane_points);
   f("max_planes", c.max_planes);
@@ -66,6 +67,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_inlier_fraction", c.min_inlier_fraction);
   f("parallel_degrees", c.parallel_degrees);
   f("perpendicular_degrees", c.perpendicular_degrees);
+  f("rim_distance", c.rim_distance);
+  f("max_size_ratio", c.max_size_ratio);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
 }
