@@ -57,6 +57,14 @@ TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
       cloud, config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), s.file);
   ASSERT_EQ(result.objects.size(), 1u);
   const auto& got = result.objects.front();
+  // One Markdown row per sample: the README's real-data table is this output.
+  std::string reported, truth;
+  for (std::size_t d = 0; d < got.dimensions.size(); ++d)
+    reported += (d ? " x " : "") + std::to_string(got.dimensions[d].second * s.scale_to_mm).substr(0, 5);
+  for (std::size_t d = 0; d < s.dims.size(); ++d)
+    truth += (d ? " x " : "") + std::to_string(s.dims[d]).substr(0, 5);
+  std::printf("| %s | %s | %s | %s | %s | %.2f |\n", s.file.c_str(), s.shape.c_str(), truth.c_str(),
+              got.shape.c_str(), reported.c_str(), got.confidence);
   ASSERT_EQ(got.shape, s.shape) << got.reason;
   ASSERT_EQ(got.dimensions.size(), s.dims.size());
   for (std::size_t d = 0; d < s.dims.size(); ++d) {
