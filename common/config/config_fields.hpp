@@ -17,6 +17,9 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("smoothing", c.smoothing);
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
+  f("split_objects", c.split_objects);
+  f("object_gap", c.object_gap);
+  f("min_object_fraction", c.min_object_fraction);
 }
 
 template <class F>

@@ -23,6 +23,11 @@ struct PreprocessConfig {
   bool smoothing = false;
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
+  // Several objects in one cloud: components over cells of this many resolutions (objects
+  // more than ~3.5 cells apart are always split); smaller components are clutter.
+  bool split_objects = true;
+  double object_gap = 2.0;
+  double min_object_fraction = 0.02;
 };
 
 struct PlanesConfig {
