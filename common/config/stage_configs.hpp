@@ -77,6 +77,7 @@ struct SolveConfig {
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
+  double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
   double preferred_margin = 0.02;        // the key-point class wins unless another solid explains this much more
 };

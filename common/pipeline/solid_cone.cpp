@@ -80,6 +80,7 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   out.shape = Shape::cone;
   out.dimensions = {{"radius", radius}, {"height", height}};
   out.center = centre;
+  out.interior = centre + 0.25 * height * axis;
   out.axes = detail::frame_from_axis(axis);
   const double slant = std::hypot(radius, height);
   out.signed_distance = [centre, axis, radius, height, slant](const Point& p) {

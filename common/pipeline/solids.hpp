@@ -30,6 +30,9 @@ struct FittedSolid {
   std::vector<std::pair<std::string, double>> dimensions;  // INTERFACE.md names and order
   Point center = Point::Zero();
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows as INTERFACE.md's axes[0..2]
+  // A point well inside the solid, from which every direction meets its surface once. It is
+  // the pose centre except where that lies on the surface (the cone's base centre).
+  std::optional<Point> interior;
   // Signed distance of a point to the solid's surface (negative inside); exact on the
   // surface, a lower bound away from it, which is all verification needs.
   std::function<double(const Point&)> signed_distance;
