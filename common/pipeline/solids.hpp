@@ -70,9 +70,11 @@ Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
 std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
                                              double slab, double face_lo, double face_hi);
 
-// Points that lie on none of the given faces.
+// Points that lie on none of the given faces, nor within `band` of their planes: noisy
+// points of a face that fell outside its fine RANSAC band are still the face's.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
-                                            const std::vector<const DetectedPlane*>& faces);
+                                            const std::vector<const DetectedPlane*>& faces,
+                                            double band = 0.0);
 
 }  // namespace detail
 }  // namespace cloudshape::pipeline
