@@ -52,7 +52,7 @@ struct PlanesConfig {
 };
 
 struct KeypointsConfig {
-  std::int64_t neighbourhood = 32;      // points per key-point neighbourhood (thesis 3.2.2 used 16; 32 types corners of voxelised clouds more reliably)
+  std::int64_t neighbourhood = 96;      // points per key-point neighbourhood (thesis 3.2.2 used 16; on voxelised clouds 96 types corners far more reliably)
   std::int64_t pursuit_max_steps = 200;
   double merge_distance = 3.0;          // key-points closer than this (resolutions) are one
 };
@@ -61,7 +61,7 @@ struct ClassifyConfig {
   std::int64_t min_points = 30;          // fewer usable points: the cloud holds no solid
   double border_curvature = 0.02;        // surface variation below this: border (thesis 3.2.2)
   double corner_gap_degrees = 210.0;     // projected angular gap above this: corner (thesis 3.2.3)
-  double inner_exclusion = 0.5;          // neighbours nearer than this share of the farthest are ignored in the gap
+  double inner_exclusion = 0.7;          // neighbours nearer than this share of the farthest are ignored in the gap
   std::int64_t apex_candidates = 1;      // the key-point's nearest samples also tried as the wedge's tip
   double sphere_max_rms = 0.02;          // sphere test: fit RMS / radius below this
   double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
