@@ -61,6 +61,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                           double resolution, const config::SolveConfig& cfg) {
   ObjectResult out;
   out.keypoints = classification.counts;
+  // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
+  for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
   if (classification.candidates.empty()) {
     out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
     return out;
