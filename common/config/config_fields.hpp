@@ -17,6 +17,9 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("smoothing", c.smoothing);
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
+  f("split_objects", c.split_objects);
+  f("object_gap", c.object_gap);
+  f("min_object_fraction", c.min_object_fraction);
 }
 
 template <class F>
@@ -24,6 +27,7 @@ void visit_fields(PlanesConfig& c, F&& f) {
   f("coarse_threshold", c.coarse_threshold);
   f("fine_threshold", c.fine_threshold);
   f("face_max_sagitta", c.face_max_sagitta);
+  f("face_min_radius_ratio", c.face_min_radius_ratio);
   f("min_plane_fraction", c.min_plane_fraction);
   f("min_plane_points", c.min_plane_points);
   f("max_planes", c.max_planes);
@@ -66,6 +70,9 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_inlier_fraction", c.min_inlier_fraction);
   f("parallel_degrees", c.parallel_degrees);
   f("perpendicular_degrees", c.perpendicular_degrees);
+  f("face_slab", c.face_slab);
+  f("rim_distance", c.rim_distance);
+  f("max_size_ratio", c.max_size_ratio);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
 }

@@ -23,12 +23,18 @@ struct PreprocessConfig {
   bool smoothing = false;
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
+  // Several objects in one cloud: components over cells of this many resolutions (objects
+  // more than ~3.5 cells apart are always split); smaller components are clutter.
+  bool split_objects = true;
+  double object_gap = 2.0;
+  double min_object_fraction = 0.02;
 };
 
 struct PlanesConfig {
   double coarse_threshold = 3.0;        // first RANSAC pass, in resolutions (thesis: two thresholds)
   double fine_threshold = 0.8;          // refit pass, in resolutions
-  double face_max_sagitta = 0.6;        // a patch curving more than this (x fine threshold) is a tangent strip, not a face
+  double face_max_sagitta = 0.6;        // a patch bending less than this (x fine threshold) is a face...
+  double face_min_radius_ratio = 5.0;   // ... and so is one curving over a radius this many times its width (a bulging real face)
   double min_plane_fraction = 0.015;    // smallest plane, as a fraction of the cloud's points
   std::int64_t min_plane_points = 20;
   std::int64_t max_planes = 16;
@@ -65,9 +71,12 @@ struct ClassifyConfig {
 
 struct SolveConfig {
   double inlier_distance = 2.0;          // points within this (resolutions) of the solid explain it
-  double min_inlier_fraction = 0.6;      // below this no candidate solid is reported
+  double min_inlier_fraction = 0.5;      // below this no candidate solid is reported
   double parallel_degrees = 10.0;        // normals within this angle count as parallel
   double perpendicular_degrees = 10.0;   // ... or as perpendicular
+  double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
+  double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
+  double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
   double preferred_margin = 0.02;        // the key-point class wins unless another solid explains this much more
 };

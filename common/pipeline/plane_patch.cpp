@@ -1,6 +1,7 @@
 #include "pipeline/plane_patch.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -71,9 +72,11 @@ PatchRaster rasterise_patch(const PointList& cloud, const std::vector<std::uint3
   return out;
 }
 
-double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>& inliers,
-                       const geometry::Plane& plane) {
-  if (inliers.size() < 12) return 0.0;
+PatchCurvature measure_patch_curvature(const PointList& cloud,
+                                       const std::vector<std::uint32_t>& inliers,
+                                       const geometry::Plane& plane) {
+  PatchCurvature out;
+  if (inliers.size() < 12) return out;
   Eigen::Vector3d u, v;
   geometry::plane_basis(plane.normal, u, v);
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -82,7 +85,7 @@ double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>&
   // Scale in-plane coordinates to ~1 so the 6x6 normal equations stay well conditioned.
   double scale = 0.0;
   for (std::uint32_t i : inliers) scale = std::max(scale, (cloud[i] - centroid).norm());
-  if (!(scale > 0.0)) return 0.0;
+  if (!(scale > 0.0)) return out;
   const std::size_t step = std::max<std::size_t>(1, inliers.size() / 3000);
   std::vector<Eigen::Vector3d> uvd;  // scaled u, scaled v, height above the plane
   for (std::size_t k = 0; k < inliers.size(); k += step) {
@@ -102,7 +105,7 @@ double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>&
     atb.noalias() += r * q.z();
   }
   const Eigen::Matrix<double, 6, 1> coef = ata.ldlt().solve(atb);
-  if (!coef.allFinite()) return 0.0;
+  if (!coef.allFinite()) return out;
   // The quadric's own departure from flatness: its fitted heights minus the plane that
   // best fits those heights.
   Eigen::Matrix3d pta = Eigen::Matrix3d::Zero();
@@ -120,7 +123,24 @@ double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>&
     dev[k] = fitted[k] - Eigen::Vector3d(1.0, uvd[k].x(), uvd[k].y()).dot(lin);
   std::sort(dev.begin(), dev.end());
   const std::size_t lo = dev.size() / 50;
-  return dev[dev.size() - 1 - lo] - dev[lo];
+  out.sagitta = dev[dev.size() - 1 - lo] - dev[lo];
+
+  // Hessian of the height in real units; its largest eigenvalue is the sharpest curvature.
+  Eigen::Matrix2d hessian;
+  hessian << 2.0 * coef(3), coef(4), coef(4), 2.0 * coef(5);
+  hessian /= scale * scale;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(hessian);
+  const int sharp = std::abs(eig.eigenvalues()(0)) > std::abs(eig.eigenvalues()(1)) ? 0 : 1;
+  const double curvature = std::abs(eig.eigenvalues()(sharp));
+  const Eigen::Vector2d dir = eig.eigenvectors().col(sharp);
+  double lo_t = std::numeric_limits<double>::infinity(), hi_t = -lo_t;
+  for (const auto& q : uvd) {
+    const double t = scale * (dir.x() * q.x() + dir.y() * q.y());
+    lo_t = std::min(lo_t, t);
+    hi_t = std::max(hi_t, t);
+  }
+  if (curvature > 0.0 && hi_t > lo_t) out.radius_to_extent = (1.0 / curvature) / (hi_t - lo_t);
+  return out;
 }
 
 }  // namespace cloudshape::pipeline::detail

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geometry/plane.hpp"
@@ -20,10 +21,20 @@ struct PatchRaster {
 PatchRaster rasterise_patch(const PointList& cloud, const std::vector<std::uint32_t>& inliers,
                             const geometry::Plane& plane, double cell);
 
-// Peak-to-peak deviation from the best plane of a least-squares quadric fitted to the
-// inliers: ~0 for a flat face (whatever the noise), ~the RANSAC threshold for a strip cut
-// from a curved surface.
-double quadric_sagitta(const PointList& cloud, const std::vector<std::uint32_t>& inliers,
-                       const geometry::Plane& plane);
+struct PatchCurvature {
+  // Peak-to-peak deviation from the best plane of a least-squares quadric fitted to the
+  // inliers: ~0 for a flat face (whatever the noise), ~the RANSAC band for a strip cut
+  // from a curved surface.
+  double sagitta = 0.0;
+  // The quadric's smallest radius of curvature divided by the patch's extent in that
+  // direction. A strip is only as wide as the band allows (about sqrt(8 R band)), which
+  // keeps this near sqrt(R / 8 band): ~3 at the point budgets used. A gently bulging real
+  // face (a cardboard box) curves over a radius many times its own width.
+  double radius_to_extent = std::numeric_limits<double>::infinity();
+};
+
+PatchCurvature measure_patch_curvature(const PointList& cloud,
+                                       const std::vector<std::uint32_t>& inliers,
+                                       const geometry::Plane& plane);
 
 }  // namespace cloudshape::pipeline::detail

@@ -189,9 +189,12 @@ PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
       detected.plane.normal = -detected.plane.normal;
       detected.plane.offset = -detected.plane.offset;
     }
-    const double sagitta = detail::quadric_sagitta(cloud, raster.largest, detected.plane);
-    detected.curvature_sagitta = sagitta / resolution;
-    detected.is_face = sagitta < cfg.face_max_sagitta * fine;
+    const detail::PatchCurvature bend =
+        detail::measure_patch_curvature(cloud, raster.largest, detected.plane);
+    detected.curvature_sagitta = bend.sagitta / resolution;
+    detected.curvature_radius_ratio = bend.radius_to_extent;
+    detected.is_face = bend.sagitta < cfg.face_max_sagitta * fine ||
+                       bend.radius_to_extent > cfg.face_min_radius_ratio;
     const auto label = static_cast<std::int32_t>(out.planes.size());
     for (std::uint32_t i : raster.largest) out.labels[i] = label;
     detected.inliers = std::move(raster.largest);

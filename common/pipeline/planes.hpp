@@ -20,6 +20,7 @@ struct DetectedPlane {
   // tangent strips RANSAC cuts out of curved surfaces (thesis Fig. 4.3).
   bool is_face = false;
   double curvature_sagitta = 0.0;       // deviation of a quadric fit from the plane, in resolutions
+  double curvature_radius_ratio = 0.0;  // the quadric's radius of curvature over the patch extent
 };
 
 struct PlaneLine {

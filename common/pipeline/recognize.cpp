@@ -7,6 +7,7 @@
 #include "pipeline/planes.hpp"
 #include "pipeline/preprocess.hpp"
 #include "pipeline/solve.hpp"
+#include "pipeline/split_objects.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -38,16 +39,19 @@ RecognitionResult recognize_cloud(const PointList& points, const config::Pipelin
   result.resolution = pre.resolution;
   result.timings.preprocess_ms = clock.lap_ms();
 
-  const PlaneSegmentation planes = segment_planes(pre.points, pre.resolution, cfg.planes);
-  result.timings.planes_ms = clock.lap_ms();
-  const KeypointSet keypoints = find_keypoints(pre.points, planes, pre.resolution, cfg.keypoints);
-  result.timings.keypoints_ms = clock.lap_ms();
-  const Classification cls =
-      classify_cloud(pre.points, planes, keypoints, pre.resolution, cfg.classify);
-  result.timings.classify_ms = clock.lap_ms();
-  result.objects.push_back(
-      solve_object(pre.points, planes, keypoints, cls, pre.resolution, cfg.solve));
-  result.timings.solve_ms = clock.lap_ms();
+  const std::vector<PointList> objects = split_objects(pre.points, pre.resolution, cfg.preprocess);
+  result.timings.preprocess_ms += clock.lap_ms();
+
+  for (const PointList& object : objects) {
+    const PlaneSegmentation planes = segment_planes(object, pre.resolution, cfg.planes);
+    result.timings.planes_ms += clock.lap_ms();
+    const KeypointSet keypoints = find_keypoints(object, planes, pre.resolution, cfg.keypoints);
+    result.timings.keypoints_ms += clock.lap_ms();
+    const Classification cls = classify_cloud(object, planes, keypoints, pre.resolution, cfg.classify);
+    result.timings.classify_ms += clock.lap_ms();
+    result.objects.push_back(solve_object(object, planes, keypoints, cls, pre.resolution, cfg.solve));
+    result.timings.solve_ms += clock.lap_ms();
+  }
   const StageTimings& t = result.timings;
   result.timings.total_ms = t.preprocess_ms + t.planes_ms + t.keypoints_ms + t.classify_ms + t.solve_ms;
   return result;

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <tuple>
 
 #include "geometry/pca.hpp"
 #include "pipeline/solids.hpp"
@@ -65,24 +66,21 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
   std::array<double, 3> lo{}, hi{};
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d axis = frame.col(k);
-    lo[k] = std::numeric_limits<double>::infinity();
-    hi[k] = -lo[k];
+    double min_t = std::numeric_limits<double>::infinity(), max_t = -min_t;
     for (const Point& p : in.cloud) {
-      lo[k] = std::min(lo[k], p.dot(axis));
-      hi[k] = std::max(hi[k], p.dot(axis));
+      min_t = std::min(min_t, p.dot(axis));
+      max_t = std::max(max_t, p.dot(axis));
     }
-    // A face seen on a side is a better bound than the extreme point: it averages
-    // thousands of points instead of trusting one.
-    double face_lo = std::numeric_limits<double>::infinity(), face_hi = -face_lo;
+    double face_lo = std::numeric_limits<double>::quiet_NaN(), face_hi = face_lo;
     for (const DetectedPlane* f : faces) {
       const double c = f->plane.normal.dot(axis);
       if (std::abs(c) < cos_parallel) continue;
       const double pos = detail::face_position(in.cloud, *f, axis);
-      if (c > 0) face_hi = std::max(face_hi, pos);
-      else face_lo = std::min(face_lo, pos);
+      if (c > 0) face_hi = std::isnan(face_hi) ? pos : std::max(face_hi, pos);
+      else face_lo = std::isnan(face_lo) ? pos : std::min(face_lo, pos);
     }
-    if (std::isfinite(face_lo)) lo[k] = face_lo;
-    if (std::isfinite(face_hi)) hi[k] = face_hi;
+    const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
+    std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi);
   }
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });

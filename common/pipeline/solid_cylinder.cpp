@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/circle.hpp"
@@ -19,10 +20,16 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
       if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -cos_parallel)
         caps = {faces[a], faces[b]};
   if (caps.empty() && !faces.empty()) caps = {faces[0]};
-  const auto side = detail::points_off_faces(in.cloud, caps);
+  const Eigen::Vector3d axis = caps.empty()
+                                   ? detail::axis_from_normals(in.cloud, detail::points_off_faces(in.cloud, {}))
+                                   : caps[0]->plane.normal;
+  // Every flat face across the axis is cap-like (a recessed lid, the top of a rim): none
+  // of them belongs to the side the radius is fitted on.
+  std::vector<const DetectedPlane*> across;
+  for (const DetectedPlane* f : faces)
+    if (std::abs(f->plane.normal.dot(axis)) > cos_parallel) across.push_back(f);
+  const auto side = detail::points_off_faces(in.cloud, across);
   if (side.size() < 6) return std::nullopt;
-  const Eigen::Vector3d axis =
-      caps.empty() ? detail::axis_from_normals(in.cloud, side) : caps[0]->plane.normal;
 
   Point centroid = Point::Zero();
   for (std::uint32_t i : side) centroid += in.cloud[i];
@@ -31,15 +38,23 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
   if (!circle) return std::nullopt;
   const Point on_axis = circle->center;
 
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Point& p : in.cloud) {
-    lo = std::min(lo, (p - on_axis).dot(axis));
-    hi = std::max(hi, (p - on_axis).dot(axis));
-  }
+  // Height: the caps, unless points stand clearly beyond a cap (a can's rim around a
+  // recessed lid): the solid's height includes the rim. A trimmed extreme keeps single
+  // stray points from counting.
+  std::vector<double> along;
+  along.reserve(in.cloud.size());
+  for (const Point& p : in.cloud) along.push_back((p - on_axis).dot(axis));
+  const std::size_t trim = along.size() / 500;
+  std::nth_element(along.begin(), along.begin() + trim, along.end());
+  const double extreme_lo = along[trim];
+  std::nth_element(along.begin(), along.end() - 1 - trim, along.end());
+  const double extreme_hi = along[along.size() - 1 - trim];
+  double lo = extreme_lo, hi = extreme_hi;
+  const double rim = in.cfg.rim_distance * in.resolution;
   for (const DetectedPlane* cap : caps) {
     const double pos = detail::face_position(in.cloud, *cap, axis) - on_axis.dot(axis);
-    if (cap->plane.normal.dot(axis) > 0) hi = pos;
-    else lo = pos;
+    if (cap->plane.normal.dot(axis) > 0) hi = extreme_hi > pos + rim ? extreme_hi : pos;
+    else lo = extreme_lo < pos - rim ? extreme_lo : pos;
   }
   FittedSolid out;
   out.shape = Shape::cylinder;

@@ -64,6 +64,28 @@ Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis) {
   return out;
 }
 
+std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
+                                             double slab, double face_lo, double face_hi) {
+  std::vector<double> t;
+  t.reserve(cloud.size());
+  for (const Point& p : cloud) t.push_back(p.dot(axis));
+  if (t.empty()) return {0.0, 0.0};
+  const auto [lo_it, hi_it] = std::minmax_element(t.begin(), t.end());
+  const double lo_edge = std::isnan(face_lo) ? *lo_it + slab : face_lo + 0.5 * slab;
+  const double hi_edge = std::isnan(face_hi) ? *hi_it - slab : face_hi - 0.5 * slab;
+  std::vector<double> low, high;
+  for (double x : t) {
+    if (x <= lo_edge) low.push_back(x);
+    if (x >= hi_edge) high.push_back(x);
+  }
+  auto median = [](std::vector<double>& v, double fallback) {
+    if (v.empty()) return fallback;
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  return {median(low, *lo_it), median(high, *hi_it)};
+}
+
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
                                             const std::vector<const DetectedPlane*>& faces) {
   std::vector<char> on_face(cloud.size(), 0);

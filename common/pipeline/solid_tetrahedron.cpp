@@ -8,6 +8,12 @@ namespace cloudshape::pipeline {
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
   if (faces.size() < 4) return std::nullopt;
+  // Faces of a regular tetrahedron meet at 70.53 deg: outward normals have dot -1/3.
+  const double tolerance = std::sin(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b)
+      if (std::abs(faces[a]->plane.normal.dot(faces[b]->plane.normal) + 1.0 / 3.0) > tolerance)
+        return std::nullopt;
   // Vertex i is where the three faces other than face i meet.
   std::array<Point, 4> vertices;
   for (int skip = 0; skip < 4; ++skip) {

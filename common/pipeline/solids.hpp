@@ -59,6 +59,14 @@ Eigen::Vector3d axis_from_normals(const PointList& cloud, const std::vector<std:
 // Rows: axis, then two unit vectors completing a right-handed orthonormal frame.
 Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
 
+// Where the solid ends along `axis` on each side: the median position of the points in a
+// slab `slab` thick at that end. Exact on a flat face, unbiased by noise, and the outer skin
+// of a bulging one (as SOURCES.md measures "face to face"). A side with a detected face
+// (its position given, else NaN) anchors its slab there rather than at the farthest point,
+// so a few stray points beyond the face cannot move it.
+std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
+                                             double slab, double face_lo, double face_hi);
+
 // Points that lie on none of the given faces.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
                                             const std::vector<const DetectedPlane*>& faces);

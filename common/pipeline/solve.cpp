@@ -18,10 +18,13 @@ double explained_fraction(const PointList& cloud, const FittedSolid& solid, doub
   return static_cast<double>(inside) / static_cast<double>(n);
 }
 
-bool plausible(const FittedSolid& s) {
+// A solid far larger than the cloud can "explain" points lying near a few of its planes;
+// no view of a real object makes it larger than the points' own extent allows.
+bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio) {
   if (!s.center.allFinite() || !s.axes.allFinite()) return false;
   for (const auto& [name, value] : s.dimensions)
-    if (!(value > 0.0) || !std::isfinite(value)) return false;
+    if (!(value > 0.0) || !std::isfinite(value) || value > max_size_ratio * cloud_diameter)
+      return false;
   return true;
 }
 
@@ -38,11 +41,12 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   const SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
   const double tolerance = cfg.inlier_distance * resolution;
+  const double diameter = 2.0 * keypoints.reference.radius;
   std::vector<std::pair<FittedSolid, double>> fitted;
   double best = 0.0;
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
-    if (!solid || !plausible(*solid)) continue;
+    if (!solid || !plausible(*solid, diameter, cfg.max_size_ratio)) continue;
     const double score =
         explained_fraction(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
     best = std::max(best, score);

@@ -1,0 +1,79 @@
+#include "pipeline/split_objects.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "geometry/detail/flat_hash.hpp"
+#include "geometry/voxel_grid.hpp"
+
+namespace cloudshape::pipeline {
+namespace {
+
+struct UnionFind {
+  std::vector<std::uint32_t> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
+};
+
+}  // namespace
+
+std::vector<PointList> split_objects(const PointList& points, double resolution,
+                                     const config::PreprocessConfig& cfg, std::size_t* dropped) {
+  if (dropped) *dropped = 0;
+  const double cell = cfg.object_gap * resolution;
+  if (!cfg.split_objects || points.empty() || !(cell > 0.0)) return {points};
+  const geometry::Bounds b = geometry::bounding_box(points);
+  if (!(((b.max - b.min) / cell).maxCoeff() < double((1 << 20) - 2))) return {points};
+
+  auto key_of = [](std::uint64_t x, std::uint64_t y, std::uint64_t z) { return (x << 42) | (y << 21) | z; };
+  geometry::detail::CellMap cells(points.size() / 2 + 16);
+  std::vector<std::uint64_t> cell_keys;
+  std::vector<std::uint32_t> cell_of(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d q = (points[i] - b.min) / cell;
+    const std::uint64_t key = key_of(static_cast<std::uint64_t>(q.x()) + 1, static_cast<std::uint64_t>(q.y()) + 1,
+                                     static_cast<std::uint64_t>(q.z()) + 1);
+    bool inserted = false;
+    cell_of[i] = cells.find_or_insert(key, static_cast<std::uint32_t>(cell_keys.size()), inserted);
+    if (inserted) cell_keys.push_back(key);
+  }
+  UnionFind uf(cell_keys.size());
+  constexpr std::uint64_t kMask = (1u << 21) - 1;
+  for (std::size_t c = 0; c < cell_keys.size(); ++c) {
+    const std::uint64_t x = cell_keys[c] >> 42, y = (cell_keys[c] >> 21) & kMask, z = cell_keys[c] & kMask;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const std::uint32_t other = cells.find(key_of(x + dx, y + dy, z + dz));
+          if (other != geometry::detail::CellMap::kAbsent) uf.unite(static_cast<std::uint32_t>(c), other);
+        }
+  }
+  std::vector<std::uint32_t> component(cell_keys.size());
+  std::vector<std::uint32_t> root_to_component(cell_keys.size(), ~0u);
+  std::vector<PointList> parts;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t root = uf.find(cell_of[i]);
+    if (root_to_component[root] == ~0u) {
+      root_to_component[root] = static_cast<std::uint32_t>(parts.size());
+      parts.emplace_back();
+    }
+    parts[root_to_component[root]].push_back(points[i]);
+  }
+  std::sort(parts.begin(), parts.end(), [](const PointList& a, const PointList& b) { return a.size() > b.size(); });
+  const auto min_size = static_cast<std::size_t>(std::ceil(cfg.min_object_fraction * static_cast<double>(points.size())));
+  std::vector<PointList> kept;
+  for (auto& part : parts) {
+    if (part.size() >= std::max<std::size_t>(1, min_size) || kept.empty())
+      kept.push_back(std::move(part));
+    else if (dropped)
+      *dropped += part.size();
+  }
+  return kept;
+}
+
+}  // namespace cloudshape::pipeline

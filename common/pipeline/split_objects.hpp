@@ -1,0 +1,21 @@
+// Separate objects of one cloud: connected components over a grid whose cell is a
+// few resolutions, so objects apart by a clear gap become separate clouds.
+#pragma once
+
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::pipeline {
+
+// Components of `points`, largest first. Cells of edge cfg.object_gap * resolution that
+// touch (26-neighbourhood) join, so objects farther apart than 2*sqrt(3) cells are always
+// split and points closer than one cell always joined. Components with fewer than
+// cfg.min_object_fraction of the points are clutter and dropped (counted in *dropped).
+// With splitting off, or nothing to split, the one component is the whole cloud.
+std::vector<PointList> split_objects(const PointList& points, double resolution,
+                                     const config::PreprocessConfig& cfg,
+                                     std::size_t* dropped = nullptr);
+
+}  // namespace cloudshape::pipeline
