@@ -19,6 +19,9 @@ PointList from_xyz(const std::vector<double>& xyz);
 
 // Preprocessing output plus the raw cloud's point count.
 msg::CloudData to_msg(const pipeline::PreprocessedCloud& cloud, std::size_t points_in);
+// One object (a part of cloud.points) of a preprocessed cloud.
+msg::CloudData to_msg(const PointList& object, const pipeline::PreprocessedCloud& cloud,
+                      std::size_t points_in);
 pipeline::PreprocessedCloud from_msg(const msg::CloudData& cloud);
 
 msg::PlaneSegmentation to_msg(const pipeline::PlaneSegmentation& planes);
@@ -39,6 +42,9 @@ pipeline::StageTimings from_msg(const msg::StageTimings& timings);
 
 // The JSON-level result (what cloudshape-recognize prints) rebuilt from a result message.
 pipeline::RecognitionResult to_recognition_result(const msg::ShapeResult& result);
+// ... from the result messages of every object of one cloud, in object order: objects
+// concatenated, preprocessing timed once, the other stages summed as recognize_cloud does.
+pipeline::RecognitionResult to_recognition_result(const std::vector<msg::ShapeResult>& objects);
 
 // The shape named `name` (INTERFACE.md), unknown for names this build does not know.
 pipeline::Shape shape_from_name(const std::string& name);

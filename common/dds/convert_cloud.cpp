@@ -28,9 +28,15 @@ PointList from_xyz(const std::vector<double>& xyz) {
 }
 
 msg::CloudData to_msg(const pipeline::PreprocessedCloud& cloud, std::size_t points_in) {
+  return to_msg(cloud.points, cloud, points_in);
+}
+
+msg::CloudData to_msg(const PointList& object, const pipeline::PreprocessedCloud& cloud,
+                      std::size_t points_in) {
   msg::CloudData m;
   m.points_in(points_in);
-  m.xyz(to_xyz(cloud.points));
+  m.points_used(cloud.points.size());
+  m.xyz(to_xyz(object));
   m.resolution(cloud.resolution);
   m.voxel_size(cloud.voxel_size);
   m.outliers_removed(cloud.outliers_removed);
@@ -114,6 +120,22 @@ pipeline::RecognitionResult to_recognition_result(const msg::ShapeResult& m) {
   r.resolution = m.resolution();
   for (const msg::ObjectResult& o : m.objects()) r.objects.push_back(from_msg(o));
   r.timings = from_msg(m.header().timings());
+  return r;
+}
+
+pipeline::RecognitionResult to_recognition_result(const std::vector<msg::ShapeResult>& objects) {
+  if (objects.empty()) return {};
+  pipeline::RecognitionResult r = to_recognition_result(objects.front());
+  for (std::size_t i = 1; i < objects.size(); ++i) {
+    const pipeline::RecognitionResult more = to_recognition_result(objects[i]);
+    r.objects.insert(r.objects.end(), more.objects.begin(), more.objects.end());
+    r.timings.planes_ms += more.timings.planes_ms;
+    r.timings.keypoints_ms += more.timings.keypoints_ms;
+    r.timings.classify_ms += more.timings.classify_ms;
+    r.timings.solve_ms += more.timings.solve_ms;
+  }
+  const pipeline::StageTimings& t = r.timings;
+  r.timings.total_ms = t.preprocess_ms + t.planes_ms + t.keypoints_ms + t.classify_ms + t.solve_ms;
   return r;
 }
 

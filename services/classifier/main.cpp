@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
           out.segmentation(std::move(in.segmentation()));
           out.keypoints(std::move(in.keypoints()));
           out.classification(cs::dds::to_msg(cls));
-          return out;
+          return cs::service::one(std::move(out));
         },
         cs::service::forward_error<cs::msg::ClassifiedKeypoints, cs::msg::KeypointCloud>);
   } catch (const std::exception& e) {

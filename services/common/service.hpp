@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "config/pipeline_config.hpp"
 #include "dds/endpoints.hpp"
@@ -64,14 +65,40 @@ class StatusReporter {
   std::thread thread_;
 };
 
-// Runs a service until stopped. `stage` turns an input sample into the output one (it may
-// move from its input); it is not called for samples that already carry an error, which go
-// on as `on_error(in, stage_name, text)` does, as do exceptions thrown by `stage`.
+template <class Out>
+std::vector<Out> one(Out&& out) {
+  std::vector<Out> v;
+  v.push_back(std::move(out));
+  return v;
+}
+
+// The default on_error: the output carries only the header, marked as failed.
+template <class Out, class In>
+Out forward_error(In& in, const std::string& stage, const std::string& text) {
+  Out out;
+  out.header(error_header(in.header(), stage, text));
+  return out;
+}
+
+// The default for a cloud with no object (header.object_count 0): pass the header on.
+template <class Out, class In>
+Out forward_empty(In& in) {
+  Out out;
+  out.header(in.header());
+  return out;
+}
+
+// Runs a service until stopped. `stage` turns an input sample into output samples (it may
+// move from its input; ingest makes one per object). It is not called for samples that
+// already carry an error, which go on as `on_error(in, stage_name, text)` makes them, as do
+// exceptions thrown by `stage`, nor for a cloud without objects (`on_empty`).
 template <class InSpec, class OutSpec>
 int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
-        const std::function<typename OutSpec::Message(typename InSpec::Message&)>& stage,
+        const std::function<std::vector<typename OutSpec::Message>(typename InSpec::Message&)>& stage,
         const std::function<typename OutSpec::Message(typename InSpec::Message&, const std::string&,
-                                                      const std::string&)>& on_error) {
+                                                      const std::string&)>& on_error,
+        const std::function<typename OutSpec::Message(typename InSpec::Message&)>& on_empty =
+            forward_empty<typename OutSpec::Message, typename InSpec::Message>) {
   using In = typename InSpec::Message;
   using Out = typename OutSpec::Message;
   const std::atomic<bool>& stop = install_stop_flag();
@@ -100,36 +127,34 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t id = h.cloud_id();
     const std::string source = h.source();
-    Out out;
+    const std::uint32_t object = h.object_index();
+    std::vector<Out> out;
     bool failed = false;
     if (h.error()) {
-      out = on_error(in, h.error_stage(), h.error_text());
+      out = one(on_error(in, h.error_stage(), h.error_text()));
       failed = true;
+    } else if (h.object_count() == 0) {
+      out = one(on_empty(in));
     } else {
       try {
         out = stage(in);
       } catch (const std::exception& e) {
-        spdlog::error("cloud {} ({}): {}", id, source, e.what());
-        out = on_error(in, opt.name, e.what());
+        spdlog::error("cloud {} ({}) object {}: {}", id, source, object, e.what());
+        out = one(on_error(in, opt.name, e.what()));
         failed = true;
       }
     }
-    if (!writer.write(out, &stop)) break;
+    bool written = true;
+    for (Out& o : out) written = written && writer.write(o, &stop);
+    if (!written) break;
     const double ms = elapsed_ms(start);
     status.processed(ms, failed);
-    spdlog::info("cloud {} ({}): {} in {:.2f} ms", id, source, failed ? "error passed on" : "done", ms);
+    spdlog::info("cloud {} ({}) object {}: {} in {:.2f} ms", id, source, object,
+                 failed ? "error passed on" : "done", ms);
   }
   status.set_state("stopping");
   spdlog::info("stopping");
   return 0;
-}
-
-// The default on_error: the output carries only the header, marked as failed.
-template <class Out, class In>
-Out forward_error(In& in, const std::string& stage, const std::string& text) {
-  Out out;
-  out.header(error_header(in.header(), stage, text));
-  return out;
 }
 
 }  // namespace cloudshape::service

@@ -1,10 +1,11 @@
-// cloudshape-ingest: raw cloud -> filtered cloud. Validates the points (finite, size limit)
-// and runs preprocess_cloud, the same call recognize_cloud makes.
+// cloudshape-ingest: raw cloud -> one filtered cloud per object. Validates the points (finite,
+// size limit), then preprocess_cloud and split_objects, the same calls recognize_cloud makes.
 #include <cmath>
 
 #include "common/service.hpp"
 #include "dds/convert.hpp"
 #include "pipeline/preprocess.hpp"
+#include "pipeline/split_objects.hpp"
 
 int main(int argc, char** argv) {
   namespace cs = cloudshape;
@@ -28,10 +29,21 @@ int main(int argc, char** argv) {
           }
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::PreprocessedCloud pre = cs::pipeline::preprocess_cloud(raw, cfg.preprocess);
-          cs::msg::FilteredCloud out;
-          out.header(in.header());
-          out.header().timings().preprocess_ms(cs::service::elapsed_ms(start));
-          out.cloud(cs::dds::to_msg(pre, raw.size()));
+          const std::vector<cs::PointList> objects =
+              cs::pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+          const double ms = cs::service::elapsed_ms(start);
+          std::vector<cs::msg::FilteredCloud> out;
+          // No object at all still makes one message (object_count 0): one result per cloud.
+          const std::size_t count = objects.size();
+          for (std::size_t i = 0; i < std::max<std::size_t>(count, 1); ++i) {
+            cs::msg::FilteredCloud o;
+            o.header(in.header());
+            o.header().object_index(static_cast<std::uint32_t>(i));
+            o.header().object_count(static_cast<std::uint32_t>(count));
+            o.header().timings().preprocess_ms(ms);
+            o.cloud(cs::dds::to_msg(count == 0 ? cs::PointList{} : objects[i], pre, raw.size()));
+            out.push_back(std::move(o));
+          }
           return out;
         },
         cs::service::forward_error<cs::msg::FilteredCloud, cs::msg::RawCloud>);

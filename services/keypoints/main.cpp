@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
           out.cloud(std::move(in.cloud()));
           out.segmentation(std::move(in.segmentation()));
           out.keypoints(cs::dds::to_msg(keypoints));
-          return out;
+          return cs::service::one(std::move(out));
         },
         cs::service::forward_error<cs::msg::KeypointCloud, cs::msg::PlanesAndLines>);
   } catch (const std::exception& e) {

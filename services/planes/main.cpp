@@ -22,7 +22,7 @@ int main(int argc, char** argv) {
           out.header().timings().planes_ms(cs::service::elapsed_ms(start));
           out.cloud(std::move(in.cloud()));
           out.segmentation(cs::dds::to_msg(seg));
-          return out;
+          return cs::service::one(std::move(out));
         },
         cs::service::forward_error<cs::msg::PlanesAndLines, cs::msg::FilteredCloud>);
   } catch (const std::exception& e) {

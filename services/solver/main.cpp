@@ -11,7 +11,7 @@ cs::msg::ShapeResult result_header(const cs::msg::ClassifiedKeypoints& in) {
   cs::msg::ShapeResult out;
   out.header(in.header());
   out.points_in(in.cloud().points_in());
-  out.points_used(in.cloud().xyz().size() / 3);
+  out.points_used(in.cloud().points_used());
   out.resolution(in.cloud().resolution());
   return out;
 }
@@ -26,6 +26,9 @@ cs::msg::ShapeResult error_result(cs::msg::ClassifiedKeypoints& in, const std::s
   out.objects().push_back(cs::dds::to_msg(unknown));
   return out;
 }
+
+// A cloud in which preprocessing found no object: a result with no objects, as recognize gives.
+cs::msg::ShapeResult empty_result(cs::msg::ClassifiedKeypoints& in) { return result_header(in); }
 
 }  // namespace
 
@@ -47,9 +50,9 @@ int main(int argc, char** argv) {
           cs::msg::ShapeResult out = result_header(in);
           out.header().timings().solve_ms(cs::service::elapsed_ms(start));
           out.objects().push_back(cs::dds::to_msg(object));
-          return out;
+          return cs::service::one(std::move(out));
         },
-        error_result);
+        error_result, empty_result);
   } catch (const std::exception& e) {
     spdlog::critical("{}", e.what());
     return 1;

@@ -4,6 +4,7 @@
 
 #include "../pipeline/stage_fixtures.hpp"
 #include "dds/convert.hpp"
+#include "dds/result_joiner.hpp"
 #include "pipeline/solve.hpp"
 
 namespace cloudshape::dds {
@@ -128,6 +129,51 @@ TEST(DdsConvert, ResultRoundTripIsExact) {
   EXPECT_EQ(b.keypoints.edge, o.keypoints.edge);
   EXPECT_EQ(b.keypoints.border, o.keypoints.border);
   EXPECT_EQ(b.reason, o.reason);
+}
+
+}  // namespace
+}  // namespace cloudshape::dds
+
+namespace cloudshape::dds {
+namespace {
+
+msg::ShapeResult object_result(std::uint32_t index, std::uint32_t count, const std::string& shape) {
+  msg::ShapeResult m;
+  m.header().cloud_id(7);
+  m.header().source("two.pcd");
+  m.header().object_index(index);
+  m.header().object_count(count);
+  m.header().timings().preprocess_ms(1.0);
+  m.header().timings().solve_ms(2.0);
+  pipeline::ObjectResult o;
+  o.shape = shape;
+  m.objects().push_back(to_msg(o));
+  return m;
+}
+
+TEST(DdsResultJoiner, JoinsACloudsObjectsInOrder) {
+  ResultJoiner joiner;
+  EXPECT_FALSE(joiner.add(object_result(1, 2, "sphere")));
+  const auto all = joiner.add(object_result(0, 2, "box"));
+  ASSERT_TRUE(all);
+  EXPECT_EQ(joiner.incomplete(), 0u);
+  const pipeline::RecognitionResult r = to_recognition_result(*all);
+  ASSERT_EQ(r.objects.size(), 2u);
+  EXPECT_EQ(r.objects[0].shape, "box");
+  EXPECT_EQ(r.objects[1].shape, "sphere");
+  EXPECT_EQ(r.timings.preprocess_ms, 1.0);  // once: ingest timed the whole cloud
+  EXPECT_EQ(r.timings.solve_ms, 4.0);       // summed over the objects
+  EXPECT_EQ(r.timings.total_ms, 5.0);
+}
+
+TEST(DdsResultJoiner, SingleAndEmptyCloudsCompleteAtOnce) {
+  ResultJoiner joiner;
+  EXPECT_TRUE(joiner.add(object_result(0, 1, "box")));
+  msg::ShapeResult empty = object_result(0, 0, "box");
+  empty.objects().clear();
+  const auto none = joiner.add(empty);
+  ASSERT_TRUE(none);
+  EXPECT_TRUE(to_recognition_result(*none).objects.empty());
 }
 
 }  // namespace

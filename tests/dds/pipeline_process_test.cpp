@@ -9,6 +9,8 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <sstream>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,29 @@ std::vector<std::string> synthetic_clouds(const std::string& dir, int points) {
   return files;
 }
 
+// A box and a sphere far apart in one .xyz file: two objects, two entries in one result.
+std::string two_object_cloud(const std::string& dir) {
+  const std::string box = dir + "/part_box.xyz", sphere = dir + "/part_sphere.xyz";
+  for (const auto& [shape, dims, out] : {std::tuple<std::string, std::string, std::string>{"box", "30,20,10", box},
+                                         {"sphere", "12", sphere}}) {
+    const ProcessResult r = run_process({kBin + "/cloudshape-synth", "shape", "--shape", shape, "--dims", dims,
+                                         "--points", "10000", "--seed", "3", "-o", out});
+    if (r.exit_code != 0) throw std::runtime_error("cloudshape-synth failed: " + r.err);
+  }
+  const std::string both = dir + "/two_objects.xyz";
+  std::ofstream out(both);
+  out.precision(17);
+  out << read_text(box);
+  std::istringstream in(read_text(sphere));
+  double x, y, z;
+  while (in >> x >> y >> z) out << x + 200.0 << ' ' << y << ' ' << z << '\n';
+  fs::remove(box);
+  fs::remove(sphere);
+  fs::remove(dir + "/part_box.json");
+  fs::remove(dir + "/part_sphere.json");
+  return both;
+}
+
 std::vector<std::string> real_clouds() {
   const fs::path real = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real";
   std::vector<std::string> files;
@@ -174,8 +199,10 @@ TEST(DdsPipeline, EchoPrintsWhatRecognizePrints) {
   Pipeline p("equivalence", 41);
   std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 20000);
   for (const std::string& f : real_clouds()) files.push_back(f);
+  files.push_back(two_object_cloud(p.dir()));
   const std::vector<std::string> expected = recognize(files);
   ASSERT_EQ(expected.size(), files.size());
+  ASSERT_EQ(report::result_from_json_line(expected.back()).objects.size(), 2u) << expected.back();
 
   const std::string bad = p.dir() + "/broken.pcd";
   { std::ofstream(bad) << "this is not a point cloud\n"; }

@@ -12,6 +12,7 @@
 
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
+#include "dds/result_joiner.hpp"
 #include "dds/topics.hpp"
 #include "report/result_json.hpp"
 
@@ -42,7 +43,8 @@ double latency_ms(const cs::msg::CloudHeader& h) {
   return static_cast<double>(now - h.inject_time_ns()) / 1e6;
 }
 
-// Takes samples of one topic and prints each with `print` until count, timeout or a signal.
+// Takes samples of one topic and hands each to `print` (true when it printed a line) until
+// `count` lines, the timeout or a signal.
 template <class Spec, class Print>
 int echo(cs::dds::Participant& participant, const Spec& spec, cs::dds::Traffic traffic, long count,
          double timeout_s, Print print) {
@@ -53,14 +55,13 @@ int echo(cs::dds::Participant& participant, const Spec& spec, cs::dds::Traffic t
   while (!g_stop && (count <= 0 || seen < count)) {
     if (timeout_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {
       if (count > 0) {
-        std::fprintf(stderr, "%s: timeout after %g s: %ld of %ld samples\n", kTool, timeout_s, seen, count);
+        std::fprintf(stderr, "%s: timeout after %g s: %ld of %ld lines\n", kTool, timeout_s, seen, count);
         return 1;
       }
       return 0;
     }
     if (!reader.take(m, std::chrono::milliseconds(200))) continue;
-    print(m);
-    ++seen;
+    if (print(m)) ++seen;
   }
   return 0;
 }
@@ -91,17 +92,25 @@ int main(int argc, char** argv) {
         cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool);
     if (status) {
       return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,
-                  [](const cs::msg::ServiceStatus& s) { std::cout << status_line(s) << '\n' << std::flush; });
+                  [](const cs::msg::ServiceStatus& s) {
+                    std::cout << status_line(s) << '\n' << std::flush;
+                    return true;
+                  });
     }
+    // The solver publishes one result per object: print a cloud once all its objects came.
+    cs::dds::ResultJoiner joiner;
     return echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
-                [&](const cs::msg::ShapeResult& r) {
-                  std::cout << cs::report::result_to_json_line(cs::dds::to_recognition_result(r)) << '\n'
+                [&](cs::msg::ShapeResult& r) {
+                  const auto cloud = joiner.add(std::move(r));
+                  if (!cloud) return false;
+                  std::cout << cs::report::result_to_json_line(cs::dds::to_recognition_result(*cloud)) << '\n'
                             << std::flush;
+                  const cs::msg::CloudHeader& h = cloud->back().header();
                   if (latency) {
-                    std::fprintf(stderr, "%s: latency_ms %.3f cloud %llu %s\n", kTool, latency_ms(r.header()),
-                                 static_cast<unsigned long long>(r.header().cloud_id()),
-                                 r.header().source().c_str());
+                    std::fprintf(stderr, "%s: latency_ms %.3f cloud %llu %s\n", kTool, latency_ms(h),
+                                 static_cast<unsigned long long>(h.cloud_id()), h.source().c_str());
                   }
+                  return true;
                 });
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kTool, e.what());
