@@ -11,7 +11,11 @@
 # plus, read as they are, ../shared/data/real/pcl/*.pcd and spherecalib/*.xyz.
 # Environment: CLOUDSHAPE_BUILD_DIR, CLOUDSHAPE_JOBS, CLOUDSHAPE_REAL_DATA (default
 # ../shared/data/real beside the repository).
-# Exit status: that of cloudshape-recognize (0 when every cloud was read).
+# Then the same clouds through the DDS pipeline: tools/launch.sh starts the five services
+# (logs in build/logs/), cloudshape-echo prints one JSON line per cloud (the same objects as
+# the recognizer's), cloudshape-inject publishes the clouds, and the services are stopped.
+# CLOUDSHAPE_DOMAIN picks the DDS domain (default 0); traffic stays on this host.
+# Exit status: 0 when every cloud was read and every DDS result arrived.
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
 CLOUDSHAPE_LOG_TAG=demo.sh
@@ -20,7 +24,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
 case "${1:-}" in
   "") ;;
-  -h|--help) sed -n '2,16s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  -h|--help) sed -n '2,20s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
   *) cs_die "unknown argument: $1 (see --help)" ;;
 esac
 
@@ -75,7 +79,7 @@ else
 fi
 
 ((${#clouds[@]} > 0)) || cs_die "no sample clouds were made"
-cs_log "recognize: ${#clouds[@]} clouds, one JSON line each"
+cs_log "recognize (in-process): ${#clouds[@]} clouds, one JSON line each"
 status=0
 "$bin/cloudshape-recognize" "${clouds[@]}" || status=$?
 if ((status == 0)); then
@@ -83,4 +87,33 @@ if ((status == 0)); then
 else
   cs_log "cloudshape-recognize exited with status $status"
 fi
+
+# The DDS pipeline on the same clouds.
+domain="${CLOUDSHAPE_DOMAIN:-0}"
+launch="$CLOUDSHAPE_REPO/tools/launch.sh"
+export CLOUDSHAPE_BUILD_DIR
+"$launch" stop >/dev/null 2>&1 || true  # leftovers of an interrupted run
+cs_log "dds: starting the five services on domain $domain (logs: $CLOUDSHAPE_BUILD_DIR/logs)"
+"$launch" start --domain "$domain"
+echo_pid=""
+# shellcheck disable=SC2317  # called by the EXIT trap
+stop_all() {
+  [[ -z "$echo_pid" ]] || kill -TERM "$echo_pid" 2>/dev/null || true
+  "$launch" stop >/dev/null || true
+}
+trap stop_all EXIT
+"$bin/cloudshape-echo" --domain "$domain" --count "${#clouds[@]}" --timeout 600 &
+echo_pid=$!
+cs_log "dds: injecting ${#clouds[@]} clouds; cloudshape-echo prints one JSON line each"
+"$bin/cloudshape-inject" --domain "$domain" --wait 120 "${clouds[@]}" 2>"$CLOUDSHAPE_BUILD_DIR/logs/inject.log" \
+  || { cs_log "cloudshape-inject failed (log: $CLOUDSHAPE_BUILD_DIR/logs/inject.log)"; status=1; }
+if wait "$echo_pid"; then
+  cs_log "dds: ${#clouds[@]} results received"
+else
+  cs_log "dds: cloudshape-echo did not receive every result"
+  status=1
+fi
+echo_pid=""
+"$launch" stop
+trap - EXIT
 exit "$status"

@@ -1,0 +1,130 @@
+#include "dds/participant.hpp"
+
+#include <cstdlib>
+#include <fastdds/dds/domain/DomainParticipantFactory.hpp>
+#include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
+#include <mutex>
+
+namespace cloudshape::dds {
+namespace fdds = eprosima::fastdds::dds;
+
+namespace {
+
+constexpr const char* kDefaultParticipantProfile = "cloudshape_localhost";
+
+const char* writer_profile(Traffic t) {
+  return t == Traffic::data ? "cloudshape_data_writer" : "cloudshape_status_writer";
+}
+const char* reader_profile(Traffic t) {
+  return t == Traffic::data ? "cloudshape_data_reader" : "cloudshape_status_reader";
+}
+
+// Loads the XML once per process; a file that does not parse is an error, not a silent default.
+void load_profiles_once() {
+  static std::once_flag once;
+  static std::string failure;
+  std::call_once(once, [] {
+    const std::string path = qos_file_path();
+    if (fdds::DomainParticipantFactory::get_instance()->load_XML_profiles_file(path) !=
+        ReturnCode_t::RETCODE_OK) {
+      failure = "cannot load Fast DDS profiles from " + path;
+    }
+  });
+  if (!failure.empty()) throw DdsError(failure);
+}
+
+}  // namespace
+
+int resolve_domain(std::optional<int> from_command_line) {
+  int domain = 0;
+  if (from_command_line) {
+    domain = *from_command_line;
+  } else if (const char* env = std::getenv("CLOUDSHAPE_DOMAIN"); env != nullptr && *env != '\0') {
+    char* end = nullptr;
+    const long value = std::strtol(env, &end, 10);
+    if (*end != '\0') throw DdsError(std::string("CLOUDSHAPE_DOMAIN is not a number: ") + env);
+    domain = static_cast<int>(value);
+  }
+  // 232 is the largest id whose UDP ports stay below 65535 with the default port mapping.
+  if (domain < 0 || domain > 232) {
+    throw DdsError("DDS domain " + std::to_string(domain) + " is out of range 0..232");
+  }
+  return domain;
+}
+
+std::string qos_file_path() {
+  if (const char* env = std::getenv("CLOUDSHAPE_QOS_FILE"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  return CLOUDSHAPE_SOURCE_QOS;
+}
+
+Participant::Participant(int domain, const std::string& name) : domain_(domain) {
+  load_profiles_once();
+  const char* env = std::getenv("CLOUDSHAPE_DDS_PROFILE");
+  const std::string profile = (env != nullptr && *env != '\0') ? env : kDefaultParticipantProfile;
+  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  fdds::DomainParticipantQos qos;
+  if (factory->get_participant_qos_from_profile(profile, qos) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError("no participant profile '" + profile + "' in " + qos_file_path());
+  }
+  qos.name(name);
+  participant_ = factory->create_participant(domain, qos);
+  if (participant_ == nullptr) {
+    throw DdsError("cannot create a DDS participant on domain " + std::to_string(domain) +
+                   " with profile '" + profile + "'");
+  }
+  publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
+  subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);
+  if (publisher_ == nullptr || subscriber_ == nullptr) {
+    factory->delete_participant(participant_);
+    throw DdsError("cannot create a DDS publisher or subscriber");
+  }
+}
+
+Participant::~Participant() {
+  participant_->delete_contained_entities();
+  fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);
+}
+
+fdds::Topic* Participant::topic_for(const std::string& name, fdds::TypeSupport& type) {
+  if (participant_->find_type(type.get_type_name()).empty()) {
+    if (type.register_type(participant_) != ReturnCode_t::RETCODE_OK) {
+      throw DdsError("cannot register type " + type.get_type_name());
+    }
+  }
+  if (auto* desc = participant_->lookup_topicdescription(name)) {
+    return static_cast<fdds::Topic*>(desc);
+  }
+  fdds::Topic* topic = participant_->create_topic(name, type.get_type_name(), fdds::TOPIC_QOS_DEFAULT);
+  if (topic == nullptr) throw DdsError("cannot create topic " + name);
+  return topic;
+}
+
+fdds::DataWriter* Participant::create_writer(fdds::Topic* topic, Traffic traffic) {
+  fdds::DataWriter* w = publisher_->create_datawriter_with_profile(topic, writer_profile(traffic));
+  if (w == nullptr) {
+    throw DdsError("cannot create a writer on " + topic->get_name() + " (profile " +
+                   writer_profile(traffic) + " in " + qos_file_path() + ")");
+  }
+  return w;
+}
+
+fdds::DataReader* Participant::create_reader(fdds::Topic* topic, Traffic traffic) {
+  fdds::DataReader* r = subscriber_->create_datareader_with_profile(topic, reader_profile(traffic));
+  if (r == nullptr) {
+    throw DdsError("cannot create a reader on " + topic->get_name() + " (profile " +
+                   reader_profile(traffic) + " in " + qos_file_path() + ")");
+  }
+  return r;
+}
+
+void Participant::delete_writer(fdds::DataWriter* writer) {
+  if (writer != nullptr) publisher_->delete_datawriter(writer);
+}
+
+void Participant::delete_reader(fdds::DataReader* reader) {
+  if (reader != nullptr) subscriber_->delete_datareader(reader);
+}
+
+}  // namespace cloudshape::dds

@@ -1,0 +1,66 @@
+// The one place that creates DDS participants: loads config/qos.xml (Fast DDS XML profiles)
+// first, because Fast DDS silently ignores XML that was not loaded before creation.
+#pragma once
+
+#include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/publisher/DataWriter.hpp>
+#include <fastdds/dds/publisher/Publisher.hpp>
+#include <fastdds/dds/subscriber/DataReader.hpp>
+#include <fastdds/dds/subscriber/Subscriber.hpp>
+#include <fastdds/dds/topic/Topic.hpp>
+#include <fastdds/dds/topic/TypeSupport.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace cloudshape::dds {
+
+class DdsError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// --domain if given, else CLOUDSHAPE_DOMAIN, else 0. Throws DdsError when out of 0..232.
+int resolve_domain(std::optional<int> from_command_line);
+
+// CLOUDSHAPE_QOS_FILE if set, else config/qos.xml of the sources (compiled in).
+std::string qos_file_path();
+
+// Which endpoint QoS profile of qos.xml an endpoint uses.
+enum class Traffic { data, status };
+
+// A participant with one publisher and one subscriber. Profile: CLOUDSHAPE_DDS_PROFILE, else
+// "cloudshape_localhost" (all traffic on this host). Deletes everything it created on destruction.
+class Participant {
+ public:
+  Participant(int domain, const std::string& name);
+  ~Participant();
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  int domain() const { return domain_; }
+
+  // Registers the type (once) and creates (or finds) the topic.
+  template <class Spec>
+  eprosima::fastdds::dds::Topic* topic(const Spec& spec) {
+    using PubSub = typename Spec::PubSubType;
+    eprosima::fastdds::dds::TypeSupport type(new PubSub());
+    return topic_for(spec.name, type);
+  }
+
+  eprosima::fastdds::dds::DataWriter* create_writer(eprosima::fastdds::dds::Topic* topic, Traffic traffic);
+  eprosima::fastdds::dds::DataReader* create_reader(eprosima::fastdds::dds::Topic* topic, Traffic traffic);
+  void delete_writer(eprosima::fastdds::dds::DataWriter* writer);
+  void delete_reader(eprosima::fastdds::dds::DataReader* reader);
+
+ private:
+  eprosima::fastdds::dds::Topic* topic_for(const std::string& name,
+                                           eprosima::fastdds::dds::TypeSupport& type);
+
+  int domain_;
+  eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
+  eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
+  eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
+};
+
+}  // namespace cloudshape::dds

@@ -1,0 +1,180 @@
+// Round trips core -> IDL -> core through common/dds/convert.hpp must be the identity:
+// the services rely on it to compute exactly what the in-process chain computes.
+#include <gtest/gtest.h>
+
+#include "../pipeline/stage_fixtures.hpp"
+#include "dds/convert.hpp"
+#include "dds/result_joiner.hpp"
+#include "pipeline/solve.hpp"
+
+namespace cloudshape::dds {
+namespace {
+
+using pipeline::testing::StagedCloud;
+
+const StagedCloud& box() {
+  static const StagedCloud s = pipeline::testing::stage(synth::ShapeKind::box, {3.0, 2.0, 1.0});
+  return s;
+}
+
+TEST(DdsConvert, CloudRoundTripIsExact) {
+  const pipeline::PreprocessedCloud& pre = box().pre;
+  const msg::CloudData m = to_msg(pre, 12345);
+  EXPECT_EQ(m.points_in(), 12345u);
+  const pipeline::PreprocessedCloud back = from_msg(m);
+  ASSERT_EQ(back.points.size(), pre.points.size());
+  for (std::size_t i = 0; i < pre.points.size(); ++i) ASSERT_EQ(back.points[i], pre.points[i]);
+  EXPECT_EQ(back.resolution, pre.resolution);
+  EXPECT_EQ(back.voxel_size, pre.voxel_size);
+  EXPECT_EQ(back.outliers_removed, pre.outliers_removed);
+}
+
+TEST(DdsConvert, XyzRejectsAPartialPoint) {
+  EXPECT_THROW(from_xyz({1.0, 2.0}), std::invalid_argument);
+}
+
+TEST(DdsConvert, PlanesRoundTripIsExact) {
+  const pipeline::PlaneSegmentation& s = box().planes;
+  ASSERT_FALSE(s.planes.empty());
+  const pipeline::PlaneSegmentation back = from_msg(to_msg(s));
+  ASSERT_EQ(back.planes.size(), s.planes.size());
+  for (std::size_t i = 0; i < s.planes.size(); ++i) {
+    EXPECT_EQ(back.planes[i].plane.normal, s.planes[i].plane.normal);
+    EXPECT_EQ(back.planes[i].plane.offset, s.planes[i].plane.offset);
+    EXPECT_EQ(back.planes[i].inliers, s.planes[i].inliers);
+    EXPECT_EQ(back.planes[i].boundary, s.planes[i].boundary);
+    EXPECT_EQ(back.planes[i].is_face, s.planes[i].is_face);
+    EXPECT_EQ(back.planes[i].curvature_sagitta, s.planes[i].curvature_sagitta);
+  }
+  ASSERT_EQ(back.lines.size(), s.lines.size());
+  for (std::size_t i = 0; i < s.lines.size(); ++i) {
+    EXPECT_EQ(back.lines[i].line.point, s.lines[i].line.point);
+    EXPECT_EQ(back.lines[i].line.direction, s.lines[i].line.direction);
+    EXPECT_EQ(back.lines[i].t_min, s.lines[i].t_min);
+    EXPECT_EQ(back.lines[i].t_max, s.lines[i].t_max);
+    EXPECT_EQ(back.lines[i].plane_a, s.lines[i].plane_a);
+    EXPECT_EQ(back.lines[i].plane_b, s.lines[i].plane_b);
+  }
+  EXPECT_EQ(back.labels, s.labels);
+}
+
+TEST(DdsConvert, KeypointsRoundTripIsExact) {
+  const pipeline::KeypointSet& k = box().keypoints;
+  ASSERT_FALSE(k.keypoints.empty());
+  const pipeline::KeypointSet back = from_msg(to_msg(k));
+  EXPECT_EQ(back.reference.center, k.reference.center);
+  EXPECT_EQ(back.reference.radius, k.reference.radius);
+  ASSERT_EQ(back.keypoints.size(), k.keypoints.size());
+  for (std::size_t i = 0; i < k.keypoints.size(); ++i) {
+    EXPECT_EQ(back.keypoints[i].index, k.keypoints[i].index);
+    EXPECT_EQ(back.keypoints[i].neighbourhood, k.keypoints[i].neighbourhood);
+  }
+}
+
+TEST(DdsConvert, ClassificationRoundTripIsExact) {
+  pipeline::Classification c = box().classification;
+  c.reason = "a reason";
+  c.candidates = {pipeline::Shape::box, pipeline::Shape::cylinder, pipeline::Shape::unknown};
+  const pipeline::Classification back = from_msg(to_msg(c));
+  ASSERT_EQ(back.keypoints.size(), c.keypoints.size());
+  for (std::size_t i = 0; i < c.keypoints.size(); ++i) {
+    EXPECT_EQ(back.keypoints[i].index, c.keypoints[i].index);
+    EXPECT_EQ(back.keypoints[i].type, c.keypoints[i].type);
+    EXPECT_EQ(back.keypoints[i].curvature, c.keypoints[i].curvature);
+    EXPECT_EQ(back.keypoints[i].gap_degrees, c.keypoints[i].gap_degrees);
+  }
+  EXPECT_EQ(back.counts.corner, c.counts.corner);
+  EXPECT_EQ(back.counts.edge, c.counts.edge);
+  EXPECT_EQ(back.counts.border, c.counts.border);
+  EXPECT_EQ(back.shape, c.shape);
+  EXPECT_EQ(back.candidates, c.candidates);
+  EXPECT_EQ(back.reason, c.reason);
+  EXPECT_EQ(back.face_fraction, c.face_fraction);
+  EXPECT_EQ(back.sphere_test, c.sphere_test);
+}
+
+TEST(DdsConvert, EveryShapeNameComesBack) {
+  for (pipeline::Shape s : pipeline::kSolidShapes) EXPECT_EQ(shape_from_name(pipeline::shape_name(s)), s);
+  EXPECT_EQ(shape_from_name("no such shape"), pipeline::Shape::unknown);
+}
+
+TEST(DdsConvert, ResultRoundTripIsExact) {
+  const StagedCloud& s = box();
+  const config::PipelineConfig cfg;
+  const pipeline::ObjectResult o = pipeline::solve_object(s.pre.points, s.planes, s.keypoints,
+                                                          s.classification, s.pre.resolution, cfg.solve);
+  msg::ShapeResult m;
+  m.header().source("box.pcd");
+  m.header().timings().planes_ms(2.5);
+  m.header().timings().solve_ms(0.5);
+  m.points_in(20000);
+  m.points_used(s.pre.points.size());
+  m.resolution(s.pre.resolution);
+  m.objects().push_back(to_msg(o));
+  const pipeline::RecognitionResult r = to_recognition_result(m);
+  EXPECT_EQ(r.source, "box.pcd");
+  EXPECT_EQ(r.points_in, 20000u);
+  EXPECT_EQ(r.points_used, s.pre.points.size());
+  EXPECT_EQ(r.resolution, s.pre.resolution);
+  EXPECT_EQ(r.timings.total_ms, 3.0);
+  ASSERT_EQ(r.objects.size(), 1u);
+  const pipeline::ObjectResult& b = r.objects[0];
+  EXPECT_EQ(b.shape, o.shape);
+  EXPECT_EQ(b.confidence, o.confidence);
+  EXPECT_EQ(b.dimensions, o.dimensions);
+  EXPECT_EQ(b.center, o.center);
+  EXPECT_EQ(b.axes, o.axes);
+  EXPECT_EQ(b.partial, o.partial);
+  EXPECT_EQ(b.keypoints.corner, o.keypoints.corner);
+  EXPECT_EQ(b.keypoints.edge, o.keypoints.edge);
+  EXPECT_EQ(b.keypoints.border, o.keypoints.border);
+  EXPECT_EQ(b.reason, o.reason);
+}
+
+}  // namespace
+}  // namespace cloudshape::dds
+
+namespace cloudshape::dds {
+namespace {
+
+msg::ShapeResult object_result(std::uint32_t index, std::uint32_t count, const std::string& shape) {
+  msg::ShapeResult m;
+  m.header().cloud_id(7);
+  m.header().source("two.pcd");
+  m.header().object_index(index);
+  m.header().object_count(count);
+  m.header().timings().preprocess_ms(1.0);
+  m.header().timings().solve_ms(2.0);
+  pipeline::ObjectResult o;
+  o.shape = shape;
+  m.objects().push_back(to_msg(o));
+  return m;
+}
+
+TEST(DdsResultJoiner, JoinsACloudsObjectsInOrder) {
+  ResultJoiner joiner;
+  EXPECT_FALSE(joiner.add(object_result(1, 2, "sphere")));
+  const auto all = joiner.add(object_result(0, 2, "box"));
+  ASSERT_TRUE(all);
+  EXPECT_EQ(joiner.incomplete(), 0u);
+  const pipeline::RecognitionResult r = to_recognition_result(*all);
+  ASSERT_EQ(r.objects.size(), 2u);
+  EXPECT_EQ(r.objects[0].shape, "box");
+  EXPECT_EQ(r.objects[1].shape, "sphere");
+  EXPECT_EQ(r.timings.preprocess_ms, 1.0);  // once: ingest timed the whole cloud
+  EXPECT_EQ(r.timings.solve_ms, 4.0);       // summed over the objects
+  EXPECT_EQ(r.timings.total_ms, 5.0);
+}
+
+TEST(DdsResultJoiner, SingleAndEmptyCloudsCompleteAtOnce) {
+  ResultJoiner joiner;
+  EXPECT_TRUE(joiner.add(object_result(0, 1, "box")));
+  msg::ShapeResult empty = object_result(0, 0, "box");
+  empty.objects().clear();
+  const auto none = joiner.add(empty);
+  ASSERT_TRUE(none);
+  EXPECT_TRUE(to_recognition_result(*none).objects.empty());
+}
+
+}  // namespace
+}  // namespace cloudshape::dds

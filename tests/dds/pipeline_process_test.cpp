@@ -1,0 +1,271 @@
+// Process-level tests of the DDS pipeline: the five services, cloudshape-inject and
+// cloudshape-echo run as real processes on a private domain (one per test, so tests can run
+// in parallel), and echo must print for every file what cloudshape-recognize prints.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <tuple>
+#include <string>
+#include <vector>
+
+#include "../tools/process.hpp"
+#include "background.hpp"
+#include "report/result_json.hpp"
+
+namespace cloudshape::testing {
+namespace {
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+const std::string kBin = CLOUDSHAPE_BIN_DIR;
+const std::vector<std::string> kStages = {"ingest", "planes", "keypoints", "classifier", "solver"};
+
+// Generous everywhere: these run on a loaded 2-core machine next to a parallel build.
+constexpr auto kStartWait = 60s;
+constexpr int kEchoTimeoutS = 180;
+
+std::string make_temp_dir(const std::string& name) {
+  std::string templ = (fs::temp_directory_path() / ("cloudshape-dds-" + name + "-XXXXXX")).string();
+  if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+  return templ;
+}
+
+// The services, echo and inject of one test on one domain; everything is stopped at the end.
+class Pipeline {
+ public:
+  Pipeline(const std::string& name, int domain) : dir_(make_temp_dir(name)), domain_(domain) {}
+  ~Pipeline() {
+    if (!::testing::Test::HasFailure()) fs::remove_all(dir_);
+  }
+
+  const std::string& dir() const { return dir_; }
+  std::string domain() const { return std::to_string(domain_); }
+
+  void start_service(const std::string& stage, std::vector<std::string> extra = {},
+                     const std::string& tag = "") {
+    std::vector<std::string> argv = {kBin + "/cloudshape-" + stage, "--domain", domain()};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    const std::string log = log_path(stage + tag);
+    services_.emplace_back(stage + tag, procs_.start(argv, log, log));
+  }
+
+  void start_echo(int count) {
+    echo_ = procs_.start({kBin + "/cloudshape-echo", "--domain", domain(), "--count", std::to_string(count),
+                          "--timeout", std::to_string(kEchoTimeoutS)},
+                         dir_ + "/echo.jsonl", log_path("echo"));
+  }
+
+  ProcessResult inject(const std::vector<std::string>& files) {
+    std::vector<std::string> argv = {kBin + "/cloudshape-inject", "--domain", domain(), "--wait",
+                                     std::to_string(kStartWait.count())};
+    argv.insert(argv.end(), files.begin(), files.end());
+    return run_process(argv);
+  }
+
+  // Echo's exit status once it printed its --count results (or timed out).
+  int wait_echo() { return procs_.wait(echo_, std::chrono::seconds(kEchoTimeoutS + 30)); }
+  std::vector<std::string> echo_lines() const { return lines_of(read_text(dir_ + "/echo.jsonl")); }
+
+  // SIGTERM to every service: each must stop cleanly with status 0.
+  void stop_services() {
+    for (const auto& [name, pid] : services_) {
+      EXPECT_EQ(procs_.stop(pid, 30s), 0) << name << " did not stop cleanly; log:\n" << read_text(log_path(name));
+    }
+    services_.clear();
+  }
+
+  std::string log_path(const std::string& name) const { return dir_ + "/" + name + ".log"; }
+
+ private:
+  std::string dir_;
+  int domain_;
+  Background procs_;
+  std::vector<std::pair<std::string, pid_t>> services_;
+  pid_t echo_ = -1;
+};
+
+std::vector<std::string> synthetic_clouds(const std::string& dir, int points) {
+  const ProcessResult r = run_process({kBin + "/cloudshape-synth", "suite", "--out", dir, "--points",
+                                       std::to_string(points), "--seed", "11", "--count", "1"});
+  if (r.exit_code != 0) throw std::runtime_error("cloudshape-synth failed: " + r.err);
+  std::vector<std::string> files;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() == ".pcd") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// A box and a sphere far apart in one .xyz file: two objects, two entries in one result.
+std::string two_object_cloud(const std::string& dir) {
+  const std::string box = dir + "/part_box.xyz", sphere = dir + "/part_sphere.xyz";
+  for (const auto& [shape, dims, out] : {std::tuple<std::string, std::string, std::string>{"box", "30,20,10", box},
+                                         {"sphere", "12", sphere}}) {
+    const ProcessResult r = run_process({kBin + "/cloudshape-synth", "shape", "--shape", shape, "--dims", dims,
+                                         "--points", "10000", "--seed", "3", "-o", out});
+    if (r.exit_code != 0) throw std::runtime_error("cloudshape-synth failed: " + r.err);
+  }
+  const std::string both = dir + "/two_objects.xyz";
+  std::ofstream out(both);
+  out.precision(17);
+  out << read_text(box);
+  std::istringstream in(read_text(sphere));
+  double x, y, z;
+  while (in >> x >> y >> z) out << x + 200.0 << ' ' << y << ' ' << z << '\n';
+  fs::remove(box);
+  fs::remove(sphere);
+  fs::remove(dir + "/part_box.json");
+  fs::remove(dir + "/part_sphere.json");
+  return both;
+}
+
+std::vector<std::string> real_clouds() {
+  const fs::path real = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real";
+  std::vector<std::string> files;
+  for (const char* f : {"pcl/milk.pcd", "pcl/mOSD_learn0_boxes.pcd", "pcl/mOSD_learn33_cylinders.pcd",
+                        "spherecalib/example3_L1_S1_lidar_sphere.xyz"}) {
+    if (fs::exists(real / f)) files.push_back((real / f).string());
+  }
+  return files;
+}
+
+std::map<std::string, pipeline::RecognitionResult> by_source(const std::vector<std::string>& lines) {
+  std::map<std::string, pipeline::RecognitionResult> results;
+  for (const std::string& line : lines) {
+    if (line.empty()) continue;
+    pipeline::RecognitionResult r = report::result_from_json_line(line);
+    EXPECT_EQ(results.count(r.source), 0u) << "two results for " << r.source;
+    results[r.source] = r;
+  }
+  return results;
+}
+
+bool close(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
+
+// The acceptance criterion: same shape, dimensions equal within 1e-6 relative (and the rest too).
+void expect_same_results(const std::vector<std::string>& expected_lines, const std::vector<std::string>& actual_lines) {
+  const auto expected = by_source(expected_lines);
+  const auto actual = by_source(actual_lines);
+  ASSERT_EQ(actual.size(), expected.size());
+  for (const auto& [source, e] : expected) {
+    SCOPED_TRACE(source);
+    ASSERT_EQ(actual.count(source), 1u) << "no result from echo";
+    const pipeline::RecognitionResult& a = actual.at(source);
+    EXPECT_EQ(a.points_in, e.points_in);
+    EXPECT_EQ(a.points_used, e.points_used);
+    EXPECT_TRUE(close(a.resolution, e.resolution));
+    ASSERT_EQ(a.objects.size(), e.objects.size());
+    for (std::size_t i = 0; i < e.objects.size(); ++i) {
+      const pipeline::ObjectResult& eo = e.objects[i];
+      const pipeline::ObjectResult& ao = a.objects[i];
+      EXPECT_EQ(ao.shape, eo.shape);
+      EXPECT_TRUE(close(ao.confidence, eo.confidence)) << ao.confidence << " vs " << eo.confidence;
+      ASSERT_EQ(ao.dimensions.size(), eo.dimensions.size());
+      for (std::size_t d = 0; d < eo.dimensions.size(); ++d) {
+        EXPECT_EQ(ao.dimensions[d].first, eo.dimensions[d].first);
+        EXPECT_TRUE(close(ao.dimensions[d].second, eo.dimensions[d].second))
+            << eo.dimensions[d].first << ": " << ao.dimensions[d].second << " vs " << eo.dimensions[d].second;
+      }
+      for (int k = 0; k < 3; ++k) EXPECT_TRUE(close(ao.center[k], eo.center[k]));
+      EXPECT_EQ(ao.partial, eo.partial);
+      EXPECT_EQ(ao.keypoints.corner, eo.keypoints.corner);
+      EXPECT_EQ(ao.keypoints.edge, eo.keypoints.edge);
+      EXPECT_EQ(ao.keypoints.border, eo.keypoints.border);
+      EXPECT_EQ(ao.reason, eo.reason);
+    }
+  }
+}
+
+std::vector<std::string> recognize(const std::vector<std::string>& files) {
+  std::vector<std::string> argv = {kBin + "/cloudshape-recognize"};
+  argv.insert(argv.end(), files.begin(), files.end());
+  const ProcessResult r = run_process(argv);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  return lines_of(r.out);
+}
+
+int count_matches(const std::string& text, const std::string& pattern) {
+  const std::regex re(pattern);
+  return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
+}
+
+TEST(DdsPipeline, EchoPrintsWhatRecognizePrints) {
+  Pipeline p("equivalence", 41);
+  std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 20000);
+  for (const std::string& f : real_clouds()) files.push_back(f);
+  files.push_back(two_object_cloud(p.dir()));
+  const std::vector<std::string> expected = recognize(files);
+  ASSERT_EQ(expected.size(), files.size());
+  ASSERT_EQ(report::result_from_json_line(expected.back()).objects.size(), 2u) << expected.back();
+
+  const std::string bad = p.dir() + "/broken.pcd";
+  { std::ofstream(bad) << "this is not a point cloud\n"; }
+  std::vector<std::string> injected = files;
+  injected.insert(injected.begin() + 1, bad);
+
+  p.start_echo(static_cast<int>(files.size()));
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject(injected);
+  EXPECT_EQ(inj.exit_code, 2) << "a bad file must give exit status 2; stderr:\n" << inj.err;
+  EXPECT_EQ(count_matches(inj.err, "broken\\.pcd"), 1) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << "echo did not print every result; its log:\n" << read_text(p.log_path("echo"));
+  expect_same_results(expected, p.echo_lines());
+  p.stop_services();
+}
+
+TEST(DdsPipeline, TwoKeypointsReplicasSplitTheWork) {
+  Pipeline p("replicas", 42);
+  const std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 8000);
+  const std::vector<std::string> expected = recognize(files);
+
+  p.start_echo(static_cast<int>(files.size()));
+  p.start_service("solver");
+  p.start_service("classifier");
+  p.start_service("keypoints", {"--lane", "0", "--lanes", "2"}, "0");
+  p.start_service("keypoints", {"--lane", "1", "--lanes", "2"}, "1");
+  // planes waits for both replicas, so no cloud is published before lane 1 listens.
+  p.start_service("planes", {"--subscribers", "2"});
+  p.start_service("ingest");
+  const ProcessResult inj = p.inject(files);
+  ASSERT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
+  expect_same_results(expected, p.echo_lines());
+  p.stop_services();
+  // Cloud ids 0..5: each replica handled exactly its half, none twice.
+  const int lane0 = count_matches(read_text(p.log_path("keypoints0")), "cloud [0-9]+ .*: done");
+  const int lane1 = count_matches(read_text(p.log_path("keypoints1")), "cloud [0-9]+ .*: done");
+  EXPECT_EQ(lane0 + lane1, static_cast<int>(files.size()));
+  EXPECT_EQ(lane0, static_cast<int>((files.size() + 1) / 2));
+  EXPECT_EQ(lane1, static_cast<int>(files.size() / 2));
+}
+
+TEST(DdsPipeline, AFailingStageStillGivesOneResult) {
+  Pipeline p("error", 43);
+  const std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 4000);
+  p.start_echo(static_cast<int>(files.size()));
+  for (const std::string& s : kStages) {
+    // An ingest that refuses every cloud: its error must travel down to the solver.
+    p.start_service(s, s == "ingest" ? std::vector<std::string>{"--max-points", "100"} : std::vector<std::string>{});
+  }
+  const ProcessResult inj = p.inject(files);
+  ASSERT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
+  const auto results = by_source(p.echo_lines());
+  ASSERT_EQ(results.size(), files.size());
+  for (const auto& [source, r] : results) {
+    ASSERT_EQ(r.objects.size(), 1u);
+    EXPECT_EQ(r.objects[0].shape, "unknown");
+    EXPECT_NE(r.objects[0].reason.find("ingest"), std::string::npos) << r.objects[0].reason;
+    EXPECT_NE(r.objects[0].reason.find("--max-points"), std::string::npos) << r.objects[0].reason;
+  }
+  p.stop_services();
+}
+
+}  // namespace
+}  // namespace cloudshape::testing

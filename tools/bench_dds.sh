@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# Latency of the DDS pipeline (inject -> echo, five services, one host) against the
+# in-process recognizer, for box clouds of 10k, 100k and 1M points. Prints a Markdown table.
+#
+#   tools/bench_dds.sh [--reps N] [--sizes "10000 100000 1000000"] [--domain N]
+#
+# DDS latency: from the moment cloudshape-inject writes the sample (system clock in the
+# header) to the moment cloudshape-echo takes the result: serialisation, transport, the
+# five stages and every IDL <-> core conversion. Clouds are sent one at a time (--rate low
+# enough that none queues). In-process: cloudshape-recognize's own timings_ms.total (the
+# stages only, file reading excluded). Medians of --reps runs. Needs a build (build/bin).
+set -euo pipefail
+# shellcheck disable=SC2034  # read by lib/deps.sh
+CLOUDSHAPE_LOG_TAG=bench_dds.sh
+# shellcheck source-path=SCRIPTDIR source=lib/deps.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
+
+reps=9
+sizes="10000 100000 1000000"
+domain=$((60 + RANDOM % 20))
+while (($#)); do
+  case "$1" in
+    --reps) reps="$2"; shift ;;
+    --sizes) sizes="$2"; shift ;;
+    --domain) domain="$2"; shift ;;
+    -h|--help) sed -n '2,12s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    *) cs_die "unknown argument: $1" ;;
+  esac
+  shift
+done
+
+bin="$CLOUDSHAPE_BUILD_DIR/bin"
+work="$(mktemp -d)"
+export CLOUDSHAPE_LOG_DIR="$work/logs"
+launch="$CLOUDSHAPE_REPO/tools/launch.sh"
+echo_pid=""
+# shellcheck disable=SC2317  # called by the EXIT trap
+cleanup() {
+  [[ -z "$echo_pid" ]] || kill -TERM "$echo_pid" 2>/dev/null || true
+  "$launch" stop >/dev/null 2>&1 || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+median() { sort -g | awk '{v[NR]=$1} END {if (NR==0) print "nan"; else if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
+
+"$launch" start --domain "$domain" >/dev/null 2>&1
+printf '| points | in-process median (ms) | DDS inject->echo median (ms) | overhead (ms) |\n'
+printf '|---:|---:|---:|---:|\n'
+for n in $sizes; do
+  cloud="$work/box_$n.pcd"
+  "$bin/cloudshape-synth" shape --shape box --dims 30,20,10 --points "$n" --seed 5 -o "$cloud" >/dev/null
+  files=()
+  for ((i = 0; i < reps; i++)); do files+=("$cloud"); done
+  inproc="$("$bin/cloudshape-recognize" "${files[@]}" | sed -n 's/.*"total":\([0-9.eE+-]*\).*/\1/p' | median)"
+  # One cloud in flight at a time: the period is a few times the in-process time.
+  rate="$(awk -v t="$inproc" 'BEGIN {p = (t * 4 + 200) / 1000; printf "%.3f", 1 / p}')"
+  "$bin/cloudshape-echo" --domain "$domain" --count "$reps" --timeout 900 --latency \
+    >/dev/null 2>"$work/latency_$n.txt" &
+  echo_pid=$!
+  "$bin/cloudshape-inject" --domain "$domain" --rate "$rate" "${files[@]}" 2>/dev/null
+  wait "$echo_pid" || cs_die "echo did not get every result for $n points"
+  echo_pid=""
+  dds="$(awk '/latency_ms/ {print $3}' "$work/latency_$n.txt" | median)"
+  printf '| %s | %.1f | %.1f | %.1f |\n' "$n" "$inproc" "$dds" "$(awk -v a="$dds" -v b="$inproc" 'BEGIN {print a - b}')"
+done

@@ -1,0 +1,119 @@
+// cloudshape-echo [--domain N] [--count N] [--timeout S] [--status] [--latency]
+// Prints every shape result as one JSON line, the very object cloudshape-recognize prints
+// (report::result_to_json_line); --status prints the services' status samples instead.
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "dds/convert.hpp"
+#include "dds/endpoints.hpp"
+#include "dds/result_joiner.hpp"
+#include "dds/topics.hpp"
+#include "report/result_json.hpp"
+
+namespace {
+namespace cs = cloudshape;
+constexpr const char* kTool = "cloudshape-echo";
+
+std::atomic<bool> g_stop{false};  // the signal flag
+void on_signal(int) { g_stop = true; }
+
+std::string status_line(const cs::msg::ServiceStatus& s) {
+  nlohmann::ordered_json j;
+  j["service"] = s.service();
+  j["lane"] = s.lane();
+  j["lanes"] = s.lanes();
+  j["pid"] = s.pid();
+  j["state"] = s.state();
+  j["processed"] = s.processed();
+  j["errors"] = s.errors();
+  j["last_latency_ms"] = s.last_latency_ms();
+  return j.dump();
+}
+
+double latency_ms(const cs::msg::CloudHeader& h) {
+  const auto now = std::chrono::duration_cast<std::chrono::nanoseconds>(
+                       std::chrono::system_clock::now().time_since_epoch())
+                       .count();
+  return static_cast<double>(now - h.inject_time_ns()) / 1e6;
+}
+
+// Takes samples of one topic and hands each to `print` (true when it printed a line) until
+// `count` lines, the timeout or a signal.
+template <class Spec, class Print>
+int echo(cs::dds::Participant& participant, const Spec& spec, cs::dds::Traffic traffic, long count,
+         double timeout_s, Print print) {
+  cs::dds::Reader<Spec> reader(participant, spec, traffic);
+  typename Spec::Message m;
+  long seen = 0;
+  const auto start = std::chrono::steady_clock::now();
+  while (!g_stop && (count <= 0 || seen < count)) {
+    if (timeout_s > 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > timeout_s) {
+      if (count > 0) {
+        std::fprintf(stderr, "%s: timeout after %g s: %ld of %ld lines\n", kTool, timeout_s, seen, count);
+        return 1;
+      }
+      return 0;
+    }
+    if (!reader.take(m, std::chrono::milliseconds(200))) continue;
+    if (print(m)) ++seen;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Prints the cloudshape shape results (one JSON line each) or the services' status.", kTool};
+  int domain = -1;
+  long count = 0;
+  double timeout_s = 0;
+  bool status = false;
+  bool latency = false;
+  app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  app.add_option("--count", count, "exit after this many samples (exit 1 if --timeout comes first)");
+  app.add_option("--timeout", timeout_s, "exit after this many seconds");
+  app.add_flag("--status", status, "print the services' status samples instead of results");
+  app.add_flag("--latency", latency, "also print each result's inject -> echo latency on stderr");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+  try {
+    cs::dds::Participant participant(
+        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool);
+    if (status) {
+      return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,
+                  [](const cs::msg::ServiceStatus& s) {
+                    std::cout << status_line(s) << '\n' << std::flush;
+                    return true;
+                  });
+    }
+    // The solver publishes one result per object: print a cloud once all its objects came.
+    cs::dds::ResultJoiner joiner;
+    return echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
+                [&](cs::msg::ShapeResult& r) {
+                  const auto cloud = joiner.add(std::move(r));
+                  if (!cloud) return false;
+                  std::cout << cs::report::result_to_json_line(cs::dds::to_recognition_result(*cloud)) << '\n'
+                            << std::flush;
+                  const cs::msg::CloudHeader& h = cloud->back().header();
+                  if (latency) {
+                    std::fprintf(stderr, "%s: latency_ms %.3f cloud %llu %s\n", kTool, latency_ms(h),
+                                 static_cast<unsigned long long>(h.cloud_id()), h.source().c_str());
+                  }
+                  return true;
+                });
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", kTool, e.what());
+    return 1;
+  }
+}
