@@ -36,18 +36,31 @@ std::optional<FittedSolid> fit_cone_without_base(const SolveInput& in) {
   for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
   const auto samples = detail::sample_normals(in.cloud, all);
   if (samples.size() < 20) return std::nullopt;
-  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for (const auto& s : samples) {
-    const Eigen::Matrix3d nn = s.normal * s.normal.transpose();
-    a += nn;
-    b += nn * s.at;
+  // Iteratively reweighted: normals taken across a sharp rim, or from stray points, give
+  // tangent planes that miss the apex by far; Cauchy weights let the consistent majority decide.
+  std::vector<double> weight(samples.size(), 1.0);
+  Point apex = Point::Zero();
+  for (int iteration = 0; iteration < 8; ++iteration) {
+    Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const Eigen::Matrix3d nn = weight[k] * samples[k].normal * samples[k].normal.transpose();
+      a += nn;
+      b += nn * samples[k].at;
+    }
+    // A cylinder's tangent planes share a direction: no single meeting point.
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> conditioning(a);
+    if (conditioning.eigenvalues()(0) < in.cfg.apex_conditioning * conditioning.eigenvalues()(2))
+      return std::nullopt;
+    apex = a.ldlt().solve(b);
+    std::vector<double> miss(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k)
+      miss[k] = std::abs(samples[k].normal.dot(apex - samples[k].at));
+    std::vector<double> sorted = miss;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double scale = std::max(1.5 * sorted[sorted.size() / 2], in.resolution);
+    for (std::size_t k = 0; k < samples.size(); ++k) weight[k] = 1.0 / (1.0 + std::pow(miss[k] / scale, 2));
   }
-  // A cylinder's tangent planes share a direction: no single meeting point.
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> conditioning(a);
-  if (conditioning.eigenvalues()(0) < in.cfg.apex_conditioning * conditioning.eigenvalues()(2))
-    return std::nullopt;
-  const Point apex = a.ldlt().solve(b);
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> dirs;
   for (const Point& p : in.cloud) {
