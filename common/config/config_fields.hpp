@@ -70,9 +70,11 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_inlier_fraction", c.min_inlier_fraction);
   f("parallel_degrees", c.parallel_degrees);
   f("perpendicular_degrees", c.perpendicular_degrees);
+  f("cap_band", c.cap_band);
   f("face_slab", c.face_slab);
   f("rim_distance", c.rim_distance);
   f("max_size_ratio", c.max_size_ratio);
+  f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
 }

@@ -52,7 +52,7 @@ struct PlanesConfig {
 };
 
 struct KeypointsConfig {
-  std::int64_t neighbourhood = 32;      // points per key-point neighbourhood (thesis 3.2.2 used 16; 32 types corners of voxelised clouds more reliably)
+  std::int64_t neighbourhood = 96;      // points per key-point neighbourhood (thesis 3.2.2 used 16; on voxelised clouds 96 types corners far more reliably)
   std::int64_t pursuit_max_steps = 200;
   double merge_distance = 3.0;          // key-points closer than this (resolutions) are one
 };
@@ -61,7 +61,7 @@ struct ClassifyConfig {
   std::int64_t min_points = 30;          // fewer usable points: the cloud holds no solid
   double border_curvature = 0.02;        // surface variation below this: border (thesis 3.2.2)
   double corner_gap_degrees = 210.0;     // projected angular gap above this: corner (thesis 3.2.3)
-  double inner_exclusion = 0.5;          // neighbours nearer than this share of the farthest are ignored in the gap
+  double inner_exclusion = 0.7;          // neighbours nearer than this share of the farthest are ignored in the gap
   std::int64_t apex_candidates = 1;      // the key-point's nearest samples also tried as the wedge's tip
   double sphere_max_rms = 0.02;          // sphere test: fit RMS / radius below this
   double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
@@ -74,9 +74,11 @@ struct SolveConfig {
   double min_inlier_fraction = 0.5;      // below this no candidate solid is reported
   double parallel_degrees = 10.0;        // normals within this angle count as parallel
   double perpendicular_degrees = 10.0;   // ... or as perpendicular
+  double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
+  double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
   double preferred_margin = 0.02;        // the key-point class wins unless another solid explains this much more
 };

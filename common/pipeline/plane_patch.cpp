@@ -4,23 +4,19 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <unordered_map>
+
+#include "geometry/detail/flat_hash.hpp"
+#include "geometry/detail/union_find.hpp"
 
 namespace cloudshape::pipeline::detail {
 namespace {
 
-std::int64_t cell_key(std::int64_t x, std::int64_t y) { return (x << 32) ^ (y & 0xffffffffLL); }
+// Offsetting to unsigned keeps every reachable key away from the map's empty marker.
+std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
+  return (static_cast<std::uint64_t>(x + (1LL << 31)) << 32) | static_cast<std::uint64_t>(y + (1LL << 31));
+}
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
+using geometry::detail::UnionFind;
 
 }  // namespace
 
@@ -34,17 +30,16 @@ PatchRaster rasterise_patch(const PointList& cloud, const std::vector<std::uint3
   Eigen::Vector3d u, v;
   geometry::plane_basis(plane.normal, u, v);
   const Point origin = cloud[inliers.front()];
-  std::unordered_map<std::int64_t, std::uint32_t> cells;
-  cells.reserve(inliers.size());
+  geometry::detail::CellMap cells(inliers.size());
   std::vector<std::uint32_t> cell_of(inliers.size());
   std::vector<std::pair<std::int64_t, std::int64_t>> coords;
   for (std::size_t i = 0; i < inliers.size(); ++i) {
     const Eigen::Vector3d d = cloud[inliers[i]] - origin;
     const auto cx = static_cast<std::int64_t>(std::floor(d.dot(u) / cell));
     const auto cy = static_cast<std::int64_t>(std::floor(d.dot(v) / cell));
-    const auto [it, inserted] = cells.try_emplace(cell_key(cx, cy), coords.size());
+    bool inserted = false;
+    cell_of[i] = cells.find_or_insert(cell_key(cx, cy), static_cast<std::uint32_t>(coords.size()), inserted);
     if (inserted) coords.emplace_back(cx, cy);
-    cell_of[i] = it->second;
   }
   UnionFind uf(coords.size());
   std::vector<std::uint8_t> full_neighbourhood(coords.size(), 1);
@@ -53,11 +48,11 @@ PatchRaster rasterise_patch(const PointList& cloud, const std::vector<std::uint3
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy) {
         if (dx == 0 && dy == 0) continue;
-        const auto it = cells.find(cell_key(cx + dx, cy + dy));
-        if (it == cells.end())
+        const std::uint32_t other = cells.find(cell_key(cx + dx, cy + dy));
+        if (other == geometry::detail::CellMap::kAbsent)
           full_neighbourhood[c] = 0;
         else
-          uf.unite(static_cast<std::uint32_t>(c), it->second);
+          uf.unite(static_cast<std::uint32_t>(c), other);
       }
   }
   std::vector<std::uint32_t> count(coords.size(), 0);

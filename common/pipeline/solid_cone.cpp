@@ -23,7 +23,7 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   // Along the side, the distance to the axis falls linearly with the height above the
   // base: r = R - k h. Gauss-Newton over the axis position (s, t in the base plane), R and
   // k uses every side point; the rim circle only gives the start.
-  const auto side = detail::points_off_faces(in.cloud, {&base});
+  const auto side = detail::points_off_faces(in.cloud, {&base}, in.cfg.cap_band * in.resolution);
   if (side.size() < 10) return std::nullopt;
   double h_max = 0.0;
   for (std::uint32_t i : side) h_max = std::max(h_max, (in.cloud[i] - start).dot(axis));
@@ -80,6 +80,7 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   out.shape = Shape::cone;
   out.dimensions = {{"radius", radius}, {"height", height}};
   out.center = centre;
+  out.interior = centre + 0.25 * height * axis;
   out.axes = detail::frame_from_axis(axis);
   const double slant = std::hypot(radius, height);
   out.signed_distance = [centre, axis, radius, height, slant](const Point& p) {

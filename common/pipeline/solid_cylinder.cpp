@@ -28,7 +28,7 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
   std::vector<const DetectedPlane*> across;
   for (const DetectedPlane* f : faces)
     if (std::abs(f->plane.normal.dot(axis)) > cos_parallel) across.push_back(f);
-  const auto side = detail::points_off_faces(in.cloud, across);
+  const auto side = detail::points_off_faces(in.cloud, across, in.cfg.cap_band * in.resolution);
   if (side.size() < 6) return std::nullopt;
 
   Point centroid = Point::Zero();

@@ -87,13 +87,19 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
 }
 
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
-                                            const std::vector<const DetectedPlane*>& faces) {
+                                            const std::vector<const DetectedPlane*>& faces,
+                                            double band) {
   std::vector<char> on_face(cloud.size(), 0);
   for (const DetectedPlane* f : faces)
     for (std::uint32_t i : f->inliers) on_face[i] = 1;
   std::vector<std::uint32_t> out;
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (!on_face[i]) out.push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (on_face[i]) continue;
+    bool near = false;
+    for (const DetectedPlane* f : faces)
+      near = near || std::abs(f->plane.signed_distance(cloud[i])) < band;
+    if (!near) out.push_back(static_cast<std::uint32_t>(i));
+  }
   return out;
 }
 

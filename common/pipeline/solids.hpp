@@ -30,6 +30,9 @@ struct FittedSolid {
   std::vector<std::pair<std::string, double>> dimensions;  // INTERFACE.md names and order
   Point center = Point::Zero();
   Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows as INTERFACE.md's axes[0..2]
+  // A point well inside the solid, from which every direction meets its surface once. It is
+  // the pose centre except where that lies on the surface (the cone's base centre).
+  std::optional<Point> interior;
   // Signed distance of a point to the solid's surface (negative inside); exact on the
   // surface, a lower bound away from it, which is all verification needs.
   std::function<double(const Point&)> signed_distance;
@@ -67,9 +70,11 @@ Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
 std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
                                              double slab, double face_lo, double face_hi);
 
-// Points that lie on none of the given faces.
+// Points that lie on none of the given faces, nor within `band` of their planes: noisy
+// points of a face that fell outside its fine RANSAC band are still the face's.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
-                                            const std::vector<const DetectedPlane*>& faces);
+                                            const std::vector<const DetectedPlane*>& faces,
+                                            double band = 0.0);
 
 }  // namespace detail
 }  // namespace cloudshape::pipeline

@@ -1,5 +1,6 @@
 #include "pipeline/solve.hpp"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -20,6 +21,31 @@ double explained_fraction(const PointList& cloud, const FittedSolid& solid, doub
 
 // A solid far larger than the cloud can "explain" points lying near a few of its planes;
 // no view of a real object makes it larger than the points' own extent allows.
+// Share of the 26 direction sectors around the solid's centre (in its own frame: faces,
+// edges and corners of a cube) that hold points. A convex solid seen whole is hit by rays
+// from its centre in every direction, so every sector holds some of its surface; a single
+// view leaves the far side's sectors empty.
+double sector_coverage(const PointList& cloud, const Point& center, const Eigen::Matrix3d& axes,
+                       double min_share) {
+  std::array<std::size_t, 27> count{};
+  for (const Point& p : cloud) {
+    const Eigen::Vector3d local = axes * (p - center);
+    const double n = local.cwiseAbs().maxCoeff();
+    if (!(n > 0.0)) continue;
+    int idx = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double c = local[k] / n;  // in [-1, 1]; the middle third is "no tilt" on this axis
+      idx = idx * 3 + (c > 0.4142 ? 2 : c < -0.4142 ? 0 : 1);
+    }
+    ++count[idx];
+  }
+  const double floor = std::max(1.0, min_share * static_cast<double>(cloud.size()) / 26.0);
+  int seen = 0;
+  for (int i = 0; i < 27; ++i)
+    if (i != 13 && static_cast<double>(count[i]) >= floor) ++seen;
+  return seen / 26.0;
+}
+
 bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio) {
   if (!s.center.allFinite() || !s.axes.allFinite()) return false;
   for (const auto& [name, value] : s.dimensions)
@@ -35,6 +61,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                           double resolution, const config::SolveConfig& cfg) {
   ObjectResult out;
   out.keypoints = classification.counts;
+  // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
+  for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
   if (classification.candidates.empty()) {
     out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
     return out;
@@ -73,7 +101,12 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.dimensions = s.dimensions;
   out.center = s.center;
   out.axes = s.axes;
-  out.confidence = std::clamp(chosen->second, 0.0, 1.0);
+  // A single view cannot confirm the hidden side: the dimensions describe what was seen,
+  // and the confidence drops with the share of the solid that was not seen.
+  const double coverage =
+      sector_coverage(cloud, s.interior.value_or(s.center), s.axes, cfg.sector_min_share);
+  out.partial = coverage < 1.0;
+  out.confidence = std::clamp(chosen->second * (0.5 + 0.5 * coverage), 0.0, 1.0);
   return out;
 }
 

@@ -2,25 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include "geometry/detail/flat_hash.hpp"
+#include "geometry/detail/union_find.hpp"
 #include "geometry/voxel_grid.hpp"
 
 namespace cloudshape::pipeline {
-namespace {
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
-
-}  // namespace
+using geometry::detail::UnionFind;
 
 std::vector<PointList> split_objects(const PointList& points, double resolution,
                                      const config::PreprocessConfig& cfg, std::size_t* dropped) {

@@ -41,7 +41,7 @@ TEST(Keypoints, BoxHasOneKeyPointAtEachCorner) {
     }
     EXPECT_LT(best, 4.0 * s.pre.resolution);
     ++hits[which];
-    EXPECT_EQ(kp.neighbourhood.size(), 32u);
+    EXPECT_EQ(kp.neighbourhood.size(), static_cast<std::size_t>(config::KeypointsConfig{}.neighbourhood));
   }
   for (int h : hits) EXPECT_EQ(h, 1);
 }

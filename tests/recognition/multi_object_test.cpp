@@ -57,5 +57,19 @@ TEST(MultiObject, SplittingOffGivesOneResult) {
   EXPECT_EQ(pipeline::recognize_cloud(cloud.points, cfg, "two").objects.size(), 1u);
 }
 
+TEST(SingleView, ABoxSeenFromOneSideIsPartial) {
+  const std::vector<synth::SolidSpec> solids = {
+      synth::make_solid(synth::ShapeKind::box, {3, 2, 1}, at(0, 0, 0, 0.3))};
+  synth::CloudOptions opts;
+  opts.points = 20000;
+  opts.view = Eigen::Vector3d(6, 5, 4);
+  const auto cloud = synth::make_synthetic_cloud(solids, opts, 7);
+  const auto result = pipeline::recognize_cloud(cloud.points, config::PipelineConfig{}, "view");
+  ASSERT_EQ(result.objects.size(), 1u);
+  const auto& got = result.objects.front();
+  EXPECT_TRUE(got.partial);
+  EXPECT_LT(got.confidence, 0.9);
+}
+
 }  // namespace
 }  // namespace cloudshape

@@ -76,6 +76,7 @@ TEST(SyntheticSuite, SixShapesRandomPosesThreeScalesTwoDensities) {
           }
           ++t.right_shape;
           ++all.right_shape;
+          EXPECT_FALSE(got.partial) << synth::to_string(kind) << " seen whole, seed " << seed - 1;
           bool within = got.dimensions.size() == truth.dimensions.size();
           for (std::size_t d = 0; within && d < truth.dimensions.size(); ++d) {
             const double rel = std::abs(got.dimensions[d].second / truth.dimensions[d].second - 1.0);

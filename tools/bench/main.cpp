@@ -2,6 +2,8 @@
 //
 //   cloudshape-bench [--sizes 10000,100000,1000000] [--shapes box,cone,...] [--reps R]
 //                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--json]
+//   cloudshape-bench --accuracy [--count N] [--conditions clean,noise,...] [--seed S]
+//                    [--config FILE] [--json]      (how right it is: see accuracy.hpp)
 //
 // For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
 // its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
@@ -19,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "accuracy.hpp"
 #include "bench_stats.hpp"
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
@@ -117,6 +120,9 @@ int main(int argc, char** argv) {
   double noise = 0.0;
   std::string config_path;
   bool json = false;
+  bool accuracy = false;
+  int count = 30;
+  std::string conditions_arg;
   app.add_option("--sizes", sizes_arg, "comma-separated point counts")->capture_default_str();
   app.add_option("--shapes", shapes_arg,
                  "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere");
@@ -130,6 +136,14 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path,
                  "pipeline configuration (default: config/pipeline.yaml, else built-in)");
   app.add_flag("--json", json, "machine-readable output");
+  app.add_flag("--accuracy", accuracy,
+               "measure recognition accuracy instead of timings (clean, noise, outliers, "
+               "single_view, multi, real)");
+  app.add_option("--count", count, "--accuracy: clouds per shape per condition")
+      ->capture_default_str();
+  app.add_option("--conditions", conditions_arg,
+                 "--accuracy: comma-separated subset of "
+                 "clean,noise,outliers,single_view,multi,real");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -174,6 +188,20 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cloudshape-bench: %s\n", e.what());
     return 2;
+  }
+  if (accuracy) {
+    if (count <= 0) {
+      std::fprintf(stderr, "cloudshape-bench: --count must be positive\n");
+      return 2;
+    }
+    cs::bench::AccuracyOptions options;
+    options.suite.count = count;
+    options.suite.seed = seed;
+    options.suite.shared_data_dir = CLOUDSHAPE_SHARED_DATA_DIR;
+    options.conditions = split(conditions_arg);
+    options.json = json;
+    options.config_label = config_path.empty() ? "built-in defaults" : config_path;
+    return cs::bench::run_accuracy(options, cfg);
   }
 
   std::vector<Case> cases;

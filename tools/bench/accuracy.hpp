@@ -1,0 +1,24 @@
+// cloudshape-bench --accuracy: recognition rate and dimension/pose errors per condition and
+// shape, on fixed-seed synthetic suites and the real sample meshes.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "accuracy_suites.hpp"
+#include "config/pipeline_config.hpp"
+
+namespace cloudshape::bench {
+
+struct AccuracyOptions {
+  SuiteOptions suite;
+  std::vector<std::string> conditions;  // empty: all of accuracy_conditions()
+  bool json = false;
+  std::string config_label;  // what --json reports as the configuration used
+};
+
+// Runs the selected conditions and prints the table (or JSON) on stdout, progress on stderr.
+// Returns the exit status: 0, or 2 for an unknown condition name.
+int run_accuracy(const AccuracyOptions& options, const config::PipelineConfig& cfg);
+
+}  // namespace cloudshape::bench
