@@ -70,6 +70,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_inlier_fraction", c.min_inlier_fraction);
   f("parallel_degrees", c.parallel_degrees);
   f("perpendicular_degrees", c.perpendicular_degrees);
+  f("apex_conditioning", c.apex_conditioning);
   f("cap_band", c.cap_band);
   f("face_slab", c.face_slab);
   f("rim_distance", c.rim_distance);

@@ -50,6 +50,11 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
     if (std::abs(n.dot(a0)) < sin_perp) a1 = (n - n.dot(a0) * a0).normalized();
   }
   if (a1.isZero()) {
+    // Two large faces at a slant are no box's (a tetrahedron's or prism's side seen alone).
+    for (std::size_t k = 1; k < faces.size(); ++k)
+      if (faces[k]->inliers.size() * 4 >= faces[0]->inliers.size() &&
+          std::abs(faces[k]->plane.normal.dot(a0)) < cos_parallel)
+        return std::nullopt;
     // One face seen: the in-plane spread of the points gives the other two directions.
     const geometry::Pca pca = geometry::compute_pca(in.cloud);
     Eigen::Vector3d best = pca.eigenvectors.col(2);

@@ -1,4 +1,6 @@
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/circle.hpp"
@@ -6,9 +8,79 @@
 
 namespace cloudshape::pipeline {
 
+namespace {
+
+FittedSolid make_cone(const Point& centre, const Eigen::Vector3d& axis, double radius, double height) {
+  FittedSolid out;
+  out.shape = Shape::cone;
+  out.dimensions = {{"radius", radius}, {"height", height}};
+  out.center = centre;
+  out.interior = centre + 0.25 * height * axis;
+  out.axes = detail::frame_from_axis(axis);
+  const double slant = std::hypot(radius, height);
+  out.signed_distance = [centre, axis, radius, height, slant](const Point& p) {
+    const Eigen::Vector3d d = p - centre;
+    const double h = d.dot(axis);
+    const double r = (d - h * axis).norm();
+    return std::max(-h, (r * height + h * radius - radius * height) / slant);
+  };
+  return out;
+}
+
+// A cone whose base is not seen (a single view, the base on the table). Every tangent
+// plane of a cone passes through its apex, so the apex is the least-squares meeting point of
+// the local tangent planes; seen from the apex, every surface point lies at the same angle
+// from the axis, so the axis is the direction those unit vectors vary least along.
+std::optional<FittedSolid> fit_cone_without_base(const SolveInput& in) {
+  std::vector<std::uint32_t> all(in.cloud.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
+  const auto samples = detail::sample_normals(in.cloud, all);
+  if (samples.size() < 20) return std::nullopt;
+  Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (const auto& s : samples) {
+    const Eigen::Matrix3d nn = s.normal * s.normal.transpose();
+    a += nn;
+    b += nn * s.at;
+  }
+  // A cylinder's tangent planes share a direction: no single meeting point.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> conditioning(a);
+  if (conditioning.eigenvalues()(0) < in.cfg.apex_conditioning * conditioning.eigenvalues()(2))
+    return std::nullopt;
+  const Point apex = a.ldlt().solve(b);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> dirs;
+  for (const Point& p : in.cloud) {
+    const Eigen::Vector3d d = p - apex;
+    if (d.norm() < 2.0 * in.resolution) continue;
+    dirs.push_back(d.normalized());
+    mean += dirs.back();
+  }
+  if (dirs.size() < 20) return std::nullopt;
+  mean /= static_cast<double>(dirs.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& d : dirs) cov.noalias() += (d - mean) * (d - mean).transpose();
+  Eigen::Vector3d down = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvectors().col(0);
+  if (down.dot(mean) < 0) down = -down;  // from the apex into the surface
+  double cos_half = 0.0;
+  for (const auto& d : dirs) cos_half += d.dot(down);
+  cos_half /= static_cast<double>(dirs.size());
+  if (!(cos_half > 0.0 && cos_half < 1.0)) return std::nullopt;
+  std::vector<double> depth;
+  for (const Point& p : in.cloud) depth.push_back((p - apex).dot(down));
+  const std::size_t top = depth.size() - 1 - depth.size() / 500;
+  std::nth_element(depth.begin(), depth.begin() + top, depth.end());
+  const double height = depth[top];
+  if (!(height > 0.0)) return std::nullopt;
+  const double radius = height * std::tan(std::acos(cos_half));
+  return make_cone(apex + height * down, -down, radius, height);
+}
+
+}  // namespace
+
 std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
-  if (faces.empty()) return std::nullopt;
+  if (faces.empty()) return fit_cone_without_base(in);
   const DetectedPlane& base = *faces[0];
   // The base's normal points away from the cloud, the apex lies the other way.
   const Eigen::Vector3d axis = -base.plane.normal;
@@ -76,20 +148,7 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   if (!(radius > 0.0) || !(slope > 0.0)) return std::nullopt;
   const double height = radius / slope;
 
-  FittedSolid out;
-  out.shape = Shape::cone;
-  out.dimensions = {{"radius", radius}, {"height", height}};
-  out.center = centre;
-  out.interior = centre + 0.25 * height * axis;
-  out.axes = detail::frame_from_axis(axis);
-  const double slant = std::hypot(radius, height);
-  out.signed_distance = [centre, axis, radius, height, slant](const Point& p) {
-    const Eigen::Vector3d d = p - centre;
-    const double h = d.dot(axis);
-    const double r = (d - h * axis).norm();
-    return std::max(-h, (r * height + h * radius - radius * height) / slant);
-  };
-  return out;
+  return make_cone(centre, axis, radius, height);
 }
 
 }  // namespace cloudshape::pipeline

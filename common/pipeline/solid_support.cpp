@@ -39,17 +39,25 @@ double face_position(const PointList& cloud, const DetectedPlane& face, const Ei
   return face.inliers.empty() ? 0.0 : sum / static_cast<double>(face.inliers.size());
 }
 
-Eigen::Vector3d axis_from_normals(const PointList& cloud, const std::vector<std::uint32_t>& points) {
-  if (points.size() < 8) return Eigen::Vector3d::UnitZ();
+std::vector<SurfaceSample> sample_normals(const PointList& cloud,
+                                          const std::vector<std::uint32_t>& points,
+                                          std::size_t max_samples) {
+  std::vector<SurfaceSample> out;
+  if (points.size() < 8) return out;
   const geometry::KdTree tree(cloud);
-  const std::size_t step = std::max<std::size_t>(1, points.size() / 1500);
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));
   std::vector<std::uint32_t> nb;
   for (std::size_t k = 0; k < points.size(); k += step) {
     tree.knn(cloud[points[k]], 12, nb);
-    const Eigen::Vector3d n = geometry::compute_pca(cloud, nb).eigenvectors.col(0);
-    m.noalias() += n * n.transpose();
+    out.push_back({cloud[points[k]], geometry::compute_pca(cloud, nb).eigenvectors.col(0).normalized()});
   }
+  return out;
+}
+
+Eigen::Vector3d axis_from_normals(const std::vector<SurfaceSample>& samples) {
+  if (samples.empty()) return Eigen::Vector3d::UnitZ();
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (const auto& s : samples) m.noalias() += s.normal * s.normal.transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
   return solver.eigenvectors().col(0).normalized();
 }

@@ -55,9 +55,18 @@ std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes)
 // Mean of p.axis over the plane's inliers: where the face sits along `axis`.
 double face_position(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis);
 
-// The direction all surface normals of the given points are perpendicular to (the axis
-// of a cylinder or, nearly, a cone), from per-point normals on a subsample.
-Eigen::Vector3d axis_from_normals(const PointList& cloud, const std::vector<std::uint32_t>& points);
+struct SurfaceSample {
+  Point at = Point::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, sign arbitrary
+};
+
+// Local-plane normals (12-neighbour PCA) of at most `max_samples` of the given points.
+std::vector<SurfaceSample> sample_normals(const PointList& cloud,
+                                          const std::vector<std::uint32_t>& points,
+                                          std::size_t max_samples = 1500);
+
+// The direction the normals are all perpendicular to (a cylinder's axis).
+Eigen::Vector3d axis_from_normals(const std::vector<SurfaceSample>& samples);
 
 // Rows: axis, then two unit vectors completing a right-handed orthonormal frame.
 Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
