@@ -78,6 +78,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
+  f("closer_fit_margin", c.closer_fit_margin);
 }
 
 // Calls f(section_name, section_struct) for every stage section.

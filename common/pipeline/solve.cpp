@@ -9,18 +9,28 @@
 namespace cloudshape::pipeline {
 namespace {
 
-double explained_fraction(const PointList& cloud, const FittedSolid& solid, double tolerance,
-                          std::size_t max_samples) {
-  if (cloud.empty()) return 0.0;
+struct Verification {
+  double explained = 0.0;  // share of points within the tolerance of the surface
+  double rms = 0.0;        // RMS surface distance, each distance capped at the tolerance
+};
+
+Verification verify(const PointList& cloud, const FittedSolid& solid, double tolerance,
+                    std::size_t max_samples) {
+  Verification v;
+  if (cloud.empty()) return v;
   const std::size_t step = std::max<std::size_t>(1, cloud.size() / std::max<std::size_t>(1, max_samples));
   std::size_t n = 0, inside = 0;
-  for (std::size_t i = 0; i < cloud.size(); i += step, ++n)
-    if (std::abs(solid.signed_distance(cloud[i])) <= tolerance) ++inside;
-  return static_cast<double>(inside) / static_cast<double>(n);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); i += step, ++n) {
+    const double d = std::abs(solid.signed_distance(cloud[i]));
+    if (d <= tolerance) ++inside;
+    sum += std::min(d, tolerance) * std::min(d, tolerance);
+  }
+  v.explained = static_cast<double>(inside) / static_cast<double>(n);
+  v.rms = std::sqrt(sum / static_cast<double>(n));
+  return v;
 }
 
-// A solid far larger than the cloud can "explain" points lying near a few of its planes;
-// no view of a real object makes it larger than the points' own extent allows.
 // Share of the 26 direction sectors around the solid's centre (in its own frame: faces,
 // edges and corners of a cube) that hold points. A convex solid seen whole is hit by rays
 // from its centre in every direction, so every sector holds some of its surface; a single
@@ -70,27 +80,29 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
   const double tolerance = cfg.inlier_distance * resolution;
   const double diameter = 2.0 * keypoints.reference.radius;
-  std::vector<std::pair<FittedSolid, double>> fitted;
+  std::vector<std::pair<FittedSolid, Verification>> fitted;
   double best = 0.0;
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
     if (!solid || !plausible(*solid, diameter, cfg.max_size_ratio)) continue;
-    const double score =
-        explained_fraction(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-    best = std::max(best, score);
-    fitted.emplace_back(std::move(*solid), score);
+    const Verification v =
+        verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    best = std::max(best, v.explained);
+    fitted.emplace_back(std::move(*solid), v);
   }
-  const std::pair<FittedSolid, double>* chosen = nullptr;
-  for (const auto& f : fitted)
-    if (f.second >= best - cfg.preferred_margin) {
-      chosen = &f;
-      break;
-    }
-  if (!chosen || chosen->second < cfg.min_inlier_fraction) {
+  // Among the solids explaining nearly the most points, the closest fit wins: on a sparse
+  // cloud a cylinder explains a pentagonal prism's points too, but not as closely. The
+  // key-point class (first candidate) keeps ties.
+  const std::pair<FittedSolid, Verification>* chosen = nullptr;
+  for (const auto& f : fitted) {
+    if (f.second.explained < best - cfg.preferred_margin) continue;
+    if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
+  }
+  if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
     char buf[160];
     if (chosen)
       std::snprintf(buf, sizeof buf, "no solid explains the points (best: %s, %.0f%% of points)",
-                    shape_name(chosen->first.shape).c_str(), 100.0 * chosen->second);
+                    shape_name(chosen->first.shape).c_str(), 100.0 * chosen->second.explained);
     else
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
     out.reason = buf;
@@ -106,7 +118,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const double coverage =
       sector_coverage(cloud, s.interior.value_or(s.center), s.axes, cfg.sector_min_share);
   out.partial = coverage < 1.0;
-  out.confidence = std::clamp(chosen->second * (0.5 + 0.5 * coverage), 0.0, 1.0);
+  out.confidence = std::clamp(chosen->second.explained * (0.5 + 0.5 * coverage), 0.0, 1.0);
   return out;
 }
 
