@@ -44,10 +44,17 @@ trap cleanup EXIT
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR==0) print "nan"; else if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
 
+read -r -a size_list <<<"$sizes"
+total=$((reps * ${#size_list[@]}))
+# One echo for the whole run, started before the services: they read input only once it
+# listens, so no result can be published before it is matched (results are VOLATILE).
+"$bin/cloudshape-echo" --domain "$domain" --count "$total" --timeout 1800 --latency \
+  >/dev/null 2>"$work/latency.txt" &
+echo_pid=$!
 "$launch" start --domain "$domain" >/dev/null 2>&1
 printf '| points | in-process median (ms) | DDS inject->echo median (ms) | overhead (ms) |\n'
 printf '|---:|---:|---:|---:|\n'
-for n in $sizes; do
+for n in "${size_list[@]}"; do
   cloud="$work/box_$n.pcd"
   "$bin/cloudshape-synth" shape --shape box --dims 30,20,10 --points "$n" --seed 5 -o "$cloud" >/dev/null
   files=()
@@ -55,12 +62,13 @@ for n in $sizes; do
   inproc="$("$bin/cloudshape-recognize" "${files[@]}" | sed -n 's/.*"total":\([0-9.eE+-]*\).*/\1/p' | median)"
   # One cloud in flight at a time: the period is a few times the in-process time.
   rate="$(awk -v t="$inproc" 'BEGIN {p = (t * 4 + 200) / 1000; printf "%.3f", 1 / p}')"
-  "$bin/cloudshape-echo" --domain "$domain" --count "$reps" --timeout 900 --latency \
-    >/dev/null 2>"$work/latency_$n.txt" &
-  echo_pid=$!
   "$bin/cloudshape-inject" --domain "$domain" --rate "$rate" "${files[@]}" 2>/dev/null
-  wait "$echo_pid" || cs_die "echo did not get every result for $n points"
-  echo_pid=""
-  dds="$(awk '/latency_ms/ {print $3}' "$work/latency_$n.txt" | median)"
+  waited=0
+  while (($(grep -c "box_$n.pcd" "$work/latency.txt" || true) < reps)); do
+    kill -0 "$echo_pid" 2>/dev/null || cs_die "cloudshape-echo ended early"
+    ((waited++ < 6000)) || cs_die "not every result came for $n points"
+    sleep 0.1
+  done
+  dds="$(awk -v f="box_$n.pcd" '/latency_ms/ && $6 == f {print $3}' "$work/latency.txt" | median)"
   printf '| %s | %.1f | %.1f | %.1f |\n' "$n" "$inproc" "$dds" "$(awk -v a="$dds" -v b="$inproc" 'BEGIN {print a - b}')"
 done

@@ -68,6 +68,12 @@ class Pipeline {
     return run_process(argv);
   }
 
+  // Another subscriber program (stdout to dir/out_name, stderr to its log).
+  pid_t start_other(const std::vector<std::string>& argv, const std::string& out_name) {
+    return procs_.start(argv, dir_ + "/" + out_name, log_path(fs::path(out_name).stem().string()));
+  }
+  int wait_other(pid_t pid) { return procs_.wait(pid, std::chrono::seconds(kEchoTimeoutS + 30)); }
+
   // Echo's exit status once it printed its --count results (or timed out).
   int wait_echo() { return procs_.wait(echo_, std::chrono::seconds(kEchoTimeoutS + 30)); }
   std::vector<std::string> echo_lines() const { return lines_of(read_text(dir_ + "/echo.jsonl")); }
@@ -265,6 +271,52 @@ TEST(DdsPipeline, AFailingStageStillGivesOneResult) {
     EXPECT_NE(r.objects[0].reason.find("--max-points"), std::string::npos) << r.objects[0].reason;
   }
   p.stop_services();
+}
+
+// Cross-vendor: a Cyclone DDS program, built from the same IDL with idlc, reads the results.
+TEST(DdsPipeline, CycloneDdsReadsTheResults) {
+#ifndef CLOUDSHAPE_CYCLONE_ECHO
+  GTEST_SKIP() << "cloudshape-cyclone-echo not built (needs cyclonedds-dev, cyclonedds-tools)";
+#else
+  Pipeline p("cyclone", 44);
+  const std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 8000);
+  const auto expected = by_source(recognize(files));
+  // Cyclone on loopback with unicast discovery, like the Fast DDS side (config/qos.xml).
+  setenv("CYCLONEDDS_URI", "file://" CLOUDSHAPE_SOURCE_DIR "/config/cyclonedds_localhost.xml", 1);
+  const pid_t reader = p.start_other({CLOUDSHAPE_CYCLONE_ECHO, "--domain", p.domain(), "--count",
+                                      std::to_string(files.size()), "--timeout", std::to_string(kEchoTimeoutS)},
+                                     "cyclone.txt");
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject(files);
+  ASSERT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_other(reader), 0) << read_text(p.log_path("cyclone"));
+  const std::vector<std::string> lines = lines_of(read_text(p.dir() + "/cyclone.txt"));
+  ASSERT_EQ(lines.size(), files.size());
+  for (const std::string& line : lines) {
+    // source \t i/n \t shape \t name=value,... \t reason
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+    ASSERT_GE(f.size(), 4u) << line;
+    SCOPED_TRACE(line);
+    ASSERT_EQ(expected.count(f[0]), 1u);
+    const pipeline::ObjectResult& e = expected.at(f[0]).objects.at(0);
+    EXPECT_EQ(f[2], e.shape);
+    for (const auto& [name, value] : e.dimensions) {
+      std::stringstream d(f[3]);
+      bool found = false;
+      for (std::string kv; std::getline(d, kv, ',');) {
+        const auto eq = kv.find('=');
+        if (kv.substr(0, eq) == name) {
+          found = true;
+          EXPECT_TRUE(close(std::stod(kv.substr(eq + 1)), value)) << name;
+        }
+      }
+      EXPECT_TRUE(found) << name;
+    }
+  }
+  p.stop_services();
+#endif
 }
 
 }  // namespace

@@ -9,6 +9,7 @@ CLOUDSHAPE_DEB_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
   libfastrtps-dev libfastcdr-dev fastddsgen
+  cyclonedds-dev cyclonedds-tools
 )
 
 CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
