@@ -10,6 +10,7 @@ CLOUDSHAPE_DEB_PACKAGES=(
   liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
   libfastrtps-dev libfastcdr-dev fastddsgen
   cyclonedds-dev cyclonedds-tools
+  docker-compose
 )
 
 CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
