@@ -20,6 +20,7 @@
 #include <sstream>
 #include <string>
 #include <vector>
+#include <unistd.h>
 
 #include "accuracy.hpp"
 #include "bench_stats.hpp"
@@ -204,6 +205,8 @@ int main(int argc, char** argv) {
     return cs::bench::run_accuracy(options, cfg);
   }
 
+  // Progress only on a terminal: redirected output stays the table alone.
+  const bool progress = isatty(fileno(stderr)) != 0;
   std::vector<Case> cases;
   for (const std::size_t n : sizes) {
     for (std::size_t k = 0; k < kinds.size(); ++k) {
@@ -221,9 +224,10 @@ int main(int argc, char** argv) {
       const std::string source = c.shape + "-" + std::to_string(n);
 
       for (int i = 0; i < warmup + c.reps; ++i) {
-        std::fprintf(stderr, "\rcloudshape-bench: %-17s %9zu points  %s %d/%d   ", c.shape.c_str(),
-                     n, i < warmup ? "warm-up" : "rep    ", i < warmup ? i + 1 : i - warmup + 1,
-                     i < warmup ? warmup : c.reps);
+        if (progress)
+          std::fprintf(stderr, "\rcloudshape-bench: %-17s %9zu points  %s %d/%d   ", c.shape.c_str(),
+                       n, i < warmup ? "warm-up" : "rep    ", i < warmup ? i + 1 : i - warmup + 1,
+                       i < warmup ? warmup : c.reps);
         const auto t0 = std::chrono::steady_clock::now();
         const cs::pipeline::RecognitionResult r = cs::pipeline::recognize_cloud(cloud, cfg, source);
         const auto t1 = std::chrono::steady_clock::now();
@@ -242,7 +246,7 @@ int main(int argc, char** argv) {
       cases.push_back(std::move(c));
     }
   }
-  std::fprintf(stderr, "\r%80s\r", "");
+  if (progress) std::fprintf(stderr, "\r%80s\r", "");
 
   if (json) {
     nlohmann::ordered_json settings;
