@@ -32,9 +32,7 @@ FittedSolid make_cone(const Point& centre, const Eigen::Vector3d& axis, double r
 // the local tangent planes; seen from the apex, every surface point lies at the same angle
 // from the axis, so the axis is the direction those unit vectors vary least along.
 std::optional<FittedSolid> fit_cone_without_base(const SolveInput& in) {
-  std::vector<std::uint32_t> all(in.cloud.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
-  const auto samples = detail::sample_normals(in.cloud, all);
+  const auto& samples = in.cloud_normals();
   if (samples.size() < 20) return std::nullopt;
   // Iteratively reweighted: normals taken across a sharp rim, or from stray points, give
   // tangent planes that miss the apex by far; Cauchy weights let the consistent majority decide.

@@ -21,7 +21,7 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
         caps = {faces[a], faces[b]};
   if (caps.empty() && !faces.empty()) caps = {faces[0]};
   const Eigen::Vector3d axis = caps.empty()
-                                   ? detail::axis_from_normals(detail::sample_normals(in.cloud, detail::points_off_faces(in.cloud, {})))
+                                   ? detail::axis_from_normals(in.cloud_normals())
                                    : caps[0]->plane.normal;
   // Every flat face across the axis is cap-like (a recessed lid, the top of a rim): none
   // of them belongs to the side the radius is fitted on.

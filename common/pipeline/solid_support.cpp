@@ -8,6 +8,15 @@
 
 namespace cloudshape::pipeline {
 
+const std::vector<detail::SurfaceSample>& SolveInput::cloud_normals() const {
+  if (!normals_) {
+    std::vector<std::uint32_t> all(cloud.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
+    normals_ = detail::sample_normals(cloud, all);
+  }
+  return *normals_;
+}
+
 std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {
   switch (shape) {
     case Shape::box: return fit_box(in);

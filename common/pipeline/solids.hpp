@@ -16,13 +16,33 @@
 
 namespace cloudshape::pipeline {
 
+namespace detail {
+struct SurfaceSample {
+  Point at = Point::Zero();
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, sign arbitrary
+};
+}  // namespace detail
+
 struct SolveInput {
+  SolveInput(const PointList& cloud_, const PlaneSegmentation& planes_, const KeypointSet& keypoints_,
+             const Classification& classification_, double resolution_,
+             const config::SolveConfig& cfg_)
+      : cloud(cloud_), planes(planes_), keypoints(keypoints_), classification(classification_),
+        resolution(resolution_), cfg(cfg_) {}
+
   const PointList& cloud;
   const PlaneSegmentation& planes;
   const KeypointSet& keypoints;
   const Classification& classification;
   double resolution;
   const config::SolveConfig& cfg;
+
+  // Normals over the whole cloud, estimated on first use and shared by the fitters that
+  // need them (cylinder and cone without a face to seed them).
+  const std::vector<detail::SurfaceSample>& cloud_normals() const;
+
+ private:
+  mutable std::optional<std::vector<detail::SurfaceSample>> normals_;
 };
 
 struct FittedSolid {
@@ -54,11 +74,6 @@ std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes)
 
 // Mean of p.axis over the plane's inliers: where the face sits along `axis`.
 double face_position(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis);
-
-struct SurfaceSample {
-  Point at = Point::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, sign arbitrary
-};
 
 // Local-plane normals (12-neighbour PCA) of at most `max_samples` of the given points.
 std::vector<SurfaceSample> sample_normals(const PointList& cloud,
