@@ -17,6 +17,7 @@
 
 #include "../tools/process.hpp"
 #include "background.hpp"
+#include "same_results.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
@@ -164,36 +165,9 @@ bool close(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0,
 
 // The acceptance criterion: same shape, dimensions equal within 1e-6 relative (and the rest too).
 void expect_same_results(const std::vector<std::string>& expected_lines, const std::vector<std::string>& actual_lines) {
-  const auto expected = by_source(expected_lines);
-  const auto actual = by_source(actual_lines);
-  ASSERT_EQ(actual.size(), expected.size());
-  for (const auto& [source, e] : expected) {
-    SCOPED_TRACE(source);
-    ASSERT_EQ(actual.count(source), 1u) << "no result from echo";
-    const pipeline::RecognitionResult& a = actual.at(source);
-    EXPECT_EQ(a.points_in, e.points_in);
-    EXPECT_EQ(a.points_used, e.points_used);
-    EXPECT_TRUE(close(a.resolution, e.resolution));
-    ASSERT_EQ(a.objects.size(), e.objects.size());
-    for (std::size_t i = 0; i < e.objects.size(); ++i) {
-      const pipeline::ObjectResult& eo = e.objects[i];
-      const pipeline::ObjectResult& ao = a.objects[i];
-      EXPECT_EQ(ao.shape, eo.shape);
-      EXPECT_TRUE(close(ao.confidence, eo.confidence)) << ao.confidence << " vs " << eo.confidence;
-      ASSERT_EQ(ao.dimensions.size(), eo.dimensions.size());
-      for (std::size_t d = 0; d < eo.dimensions.size(); ++d) {
-        EXPECT_EQ(ao.dimensions[d].first, eo.dimensions[d].first);
-        EXPECT_TRUE(close(ao.dimensions[d].second, eo.dimensions[d].second))
-            << eo.dimensions[d].first << ": " << ao.dimensions[d].second << " vs " << eo.dimensions[d].second;
-      }
-      for (int k = 0; k < 3; ++k) EXPECT_TRUE(close(ao.center[k], eo.center[k]));
-      EXPECT_EQ(ao.partial, eo.partial);
-      EXPECT_EQ(ao.keypoints.corner, eo.keypoints.corner);
-      EXPECT_EQ(ao.keypoints.edge, eo.keypoints.edge);
-      EXPECT_EQ(ao.keypoints.border, eo.keypoints.border);
-      EXPECT_EQ(ao.reason, eo.reason);
-    }
-  }
+  std::string report;
+  for (const std::string& d : result_differences(expected_lines, actual_lines)) report += d + "\n";
+  EXPECT_TRUE(report.empty()) << report;
 }
 
 std::vector<std::string> recognize(const std::vector<std::string>& files) {
@@ -207,6 +181,35 @@ std::vector<std::string> recognize(const std::vector<std::string>& files) {
 int count_matches(const std::string& text, const std::string& pattern) {
   const std::regex re(pattern);
   return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
+}
+
+// The lines of cloudshape-cyclone-echo and examples/subscribe_results.cpp, one per object
+// (source \t i/n \t shape \t name=value,... \t reason), against recognize's results.
+void expect_object_lines_match(const std::map<std::string, pipeline::RecognitionResult>& expected,
+                               const std::vector<std::string>& lines, std::size_t count) {
+  ASSERT_EQ(lines.size(), count);
+  for (const std::string& line : lines) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+    ASSERT_GE(f.size(), 4u) << line;
+    SCOPED_TRACE(line);
+    ASSERT_EQ(expected.count(f[0]), 1u);
+    const pipeline::ObjectResult& e = expected.at(f[0]).objects.at(0);
+    EXPECT_EQ(f[2], e.shape);
+    for (const auto& [name, value] : e.dimensions) {
+      std::stringstream d(f[3]);
+      bool found = false;
+      for (std::string kv; std::getline(d, kv, ',');) {
+        const auto eq = kv.find('=');
+        if (kv.substr(0, eq) == name) {
+          found = true;
+          EXPECT_TRUE(close(std::stod(kv.substr(eq + 1)), value)) << name;
+        }
+      }
+      EXPECT_TRUE(found) << name;
+    }
+  }
 }
 
 TEST(DdsPipeline, EchoPrintsWhatRecognizePrints) {
@@ -298,33 +301,25 @@ TEST(DdsPipeline, CycloneDdsReadsTheResults) {
   const ProcessResult inj = p.inject(files);
   ASSERT_EQ(inj.exit_code, 0) << inj.err;
   ASSERT_EQ(p.wait_other(reader), 0) << read_text(p.log_path("cyclone"));
-  const std::vector<std::string> lines = lines_of(read_text(p.dir() + "/cyclone.txt"));
-  ASSERT_EQ(lines.size(), files.size());
-  for (const std::string& line : lines) {
-    // source \t i/n \t shape \t name=value,... \t reason
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-    ASSERT_GE(f.size(), 4u) << line;
-    SCOPED_TRACE(line);
-    ASSERT_EQ(expected.count(f[0]), 1u);
-    const pipeline::ObjectResult& e = expected.at(f[0]).objects.at(0);
-    EXPECT_EQ(f[2], e.shape);
-    for (const auto& [name, value] : e.dimensions) {
-      std::stringstream d(f[3]);
-      bool found = false;
-      for (std::string kv; std::getline(d, kv, ',');) {
-        const auto eq = kv.find('=');
-        if (kv.substr(0, eq) == name) {
-          found = true;
-          EXPECT_TRUE(close(std::stod(kv.substr(eq + 1)), value)) << name;
-        }
-      }
-      EXPECT_TRUE(found) << name;
-    }
-  }
+  expect_object_lines_match(expected, lines_of(read_text(p.dir() + "/cyclone.txt")), files.size());
   p.stop_services();
 #endif
+}
+
+// The README's Fast DDS subscriber (examples/subscribe_results.cpp) reads the results.
+TEST(DdsPipeline, ExampleSubscriberReadsTheResults) {
+  Pipeline p("example", 47);
+  const std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 4000);
+  const auto expected = by_source(recognize(files));
+  const pid_t reader = p.start_other({kBin + "/cloudshape-example-subscribe", CLOUDSHAPE_SOURCE_DIR "/config/qos.xml",
+                                      p.domain(), std::to_string(files.size())},
+                                     "example.txt");
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject(files);
+  ASSERT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_other(reader), 0) << read_text(p.log_path("example"));
+  expect_object_lines_match(expected, lines_of(read_text(p.dir() + "/example.txt")), files.size());
+  p.stop_services();
 }
 
 }  // namespace

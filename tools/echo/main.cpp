@@ -36,11 +36,9 @@ std::string status_line(const cs::msg::ServiceStatus& s) {
   return j.dump();
 }
 
-double latency_ms(const cs::msg::CloudHeader& h) {
-  const auto now = std::chrono::duration_cast<std::chrono::nanoseconds>(
-                       std::chrono::system_clock::now().time_since_epoch())
-                       .count();
-  return static_cast<double>(now - h.inject_time_ns()) / 1e6;
+long long now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
 }
 
 // Takes samples of one topic and hands each to `print` (true when it printed a line) until
@@ -79,7 +77,7 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "exit after this many samples (exit 1 if --timeout comes first)");
   app.add_option("--timeout", timeout_s, "exit after this many seconds");
   app.add_flag("--status", status, "print the services' status samples instead of results");
-  app.add_flag("--latency", latency, "also print each result's inject -> echo latency on stderr");
+  app.add_flag("--latency", latency, "also print each result's inject -> echo latency (and receive time) on stderr");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -107,8 +105,11 @@ int main(int argc, char** argv) {
                             << std::flush;
                   const cs::msg::CloudHeader& h = cloud->back().header();
                   if (latency) {
-                    std::fprintf(stderr, "%s: latency_ms %.3f cloud %llu %s\n", kTool, latency_ms(h),
-                                 static_cast<unsigned long long>(h.cloud_id()), h.source().c_str());
+                    // The receive time too, so a steady-rate run can tell the delivered rate.
+                    const long long now = now_ns();
+                    std::fprintf(stderr, "%s: latency_ms %.3f cloud %llu %s received_ns %lld\n", kTool,
+                                 static_cast<double>(now - h.inject_time_ns()) / 1e6,
+                                 static_cast<unsigned long long>(h.cloud_id()), h.source().c_str(), now);
                   }
                   return true;
                 });

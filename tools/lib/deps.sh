@@ -2,16 +2,26 @@
 # the Debian packages cloudshape needs, installing only what is missing, and the build.
 # shellcheck shell=bash
 
-# The one list of Debian 12 packages needed to build, test and run cloudshape.
-CLOUDSHAPE_DEB_PACKAGES=(
+# The Debian 12 packages needed to build cloudshape (docker/Dockerfile installs only these).
+CLOUDSHAPE_BUILD_PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libnanoflann-dev libyaml-cpp-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
   libfastrtps-dev libfastcdr-dev fastddsgen
+)
+# The one list tools/test.sh and tools/demo.sh install: the build plus what the default tests
+# use (Cyclone DDS for the interop test, docker-compose to validate docker/compose.yaml).
+CLOUDSHAPE_DEB_PACKAGES=(
+  "${CLOUDSHAPE_BUILD_PACKAGES[@]}"
   cyclonedds-dev cyclonedds-tools
   docker-compose
 )
+# Only for the long container test (tests/docker/podman_stack_test.sh installs them itself):
+# podman with runc (crun refuses these machines' hybrid cgroups), podman-compose, and
+# debootstrap for a base image without a registry.
+# shellcheck disable=SC2034  # used by tests/docker/podman_stack_test.sh
+CLOUDSHAPE_CONTAINER_PACKAGES=(podman runc podman-compose debootstrap)
 
 CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 # build/ per INTERFACE.md; CLOUDSHAPE_BUILD_DIR overrides it (e.g. for a second, private tree).
@@ -22,22 +32,26 @@ CLOUDSHAPE_LOG_TAG="${CLOUDSHAPE_LOG_TAG:-cloudshape}"
 cs_log() { printf '[%s] %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; }
 cs_die() { printf '[%s] ERROR: %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; exit 1; }
 
-# Prints the packages of CLOUDSHAPE_DEB_PACKAGES that are not installed, one per line.
+# Prints the packages of the list given (default CLOUDSHAPE_DEB_PACKAGES) that are not
+# installed, one per line.
 cs_missing_packages() {
   local pkg status
-  for pkg in "${CLOUDSHAPE_DEB_PACKAGES[@]}"; do
+  (($#)) || set -- "${CLOUDSHAPE_DEB_PACKAGES[@]}"
+  for pkg in "$@"; do
     status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
     [[ "$status" == "install ok installed" ]] || printf '%s\n' "$pkg"
   done
 }
 
-# Installs the missing packages non-interactively; touches apt only when something is missing.
+# Installs the missing packages of the list given (default CLOUDSHAPE_DEB_PACKAGES)
+# non-interactively; touches apt only when something is missing.
 cs_ensure_packages() {
   command -v dpkg-query >/dev/null 2>&1 || cs_die "dpkg-query not found: this script expects Debian 12"
+  (($#)) || set -- "${CLOUDSHAPE_DEB_PACKAGES[@]}"
   local missing
-  mapfile -t missing < <(cs_missing_packages)
+  mapfile -t missing < <(cs_missing_packages "$@")
   if ((${#missing[@]} == 0)); then
-    cs_log "dependencies: all ${#CLOUDSHAPE_DEB_PACKAGES[@]} Debian packages present"
+    cs_log "dependencies: all $# Debian packages present"
     return 0
   fi
   cs_log "dependencies: installing ${missing[*]}"
@@ -53,7 +67,7 @@ cs_ensure_packages() {
   "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends \
     -o Dpkg::Options::=--force-confdef -o Dpkg::Options::=--force-confold "${missing[@]}" \
     || cs_die "apt-get install failed"
-  mapfile -t missing < <(cs_missing_packages)
+  mapfile -t missing < <(cs_missing_packages "$@")
   ((${#missing[@]} == 0)) || cs_die "still missing after install: ${missing[*]}"
 }
 
