@@ -10,12 +10,14 @@
 # the moment cloudshape-echo takes the result: serialisation, transport, the five stages and
 # every IDL <-> core conversion; clouds sent one at a time; median and p99 of --reps runs
 # (p99 of 9 runs is their maximum). In-process: cloudshape-recognize's own timings_ms.total
-# (the stages only, file reading excluded).
+# (the stages only, file reading excluded). Overhead: per cloud, the DDS latency minus the
+# stage times the services measured for it (so load that varies between runs cancels out).
 # Throughput: for each rate, --clouds clouds (default 100) of --points points (default 100 000)
 # injected at that fixed rate; reports the rate sent and delivered (echo's receive times),
 # the clouds lost, latency median / p99, and "sustained": every cloud delivered, delivered rate
-# within 3% of the target and no queue building up (the last quarter's median latency at most
-# 1.5 x the first quarter's + 20 ms). Needs a build (build/bin).
+# within 3% of the target, and no queue: median latency at most one period above the median of
+# 10 clouds sent first at 1 cloud/s (the unloaded latency), p99 at most 3 x that median.
+# Needs a build (build/bin).
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
 CLOUDSHAPE_LOG_TAG=bench_dds.sh
@@ -70,6 +72,15 @@ inprocess_median() {  # inprocess_median FILE REPS: median timings_ms.total of c
 }
 # Echo's latency lines of the clouds with ids in [$1, $1 + $2).
 latency_lines() { awk -v lo="$1" -v n="$2" '/latency_ms/ && $5 >= lo && $5 < lo + n' "$work/latency.txt"; }
+# Per cloud with ids in [$1, $1 + $2): latency minus the stage times the services measured for
+# that very cloud (echo's timings_ms.total): the DDS overhead, unaffected by load that changes
+# between a separate in-process run and this one. Echo prints a cloud's result line and its
+# latency line together, so the k-th of each belong to the same cloud.
+overheads() {
+  awk -v lo="$1" -v n="$2" '
+    FNR == NR { if ($0 ~ /^\{/ && match($0, /"total":[0-9.eE+-]+/)) total[++r] = substr($0, RSTART + 8, RLENGTH - 8); next }
+    /latency_ms/ { ++k; if ($5 >= lo && $5 < lo + n) print $3 - total[k] }' "$work/results.jsonl" "$work/latency.txt"
+}
 wait_for_results() {  # wait_for_results FIRST_ID N: until all came, or 30 s without a new one
   local got last=-1 still=0
   while :; do
@@ -83,14 +94,14 @@ wait_for_results() {  # wait_for_results FIRST_ID N: until all came, or 30 s wit
 
 # One echo for the whole run, started before the services: they read input only once it
 # listens, so no result can be published before it is matched (results are VOLATILE).
-"$bin/cloudshape-echo" --domain "$domain" --timeout 7200 --latency >/dev/null 2>"$work/latency.txt" &
+"$bin/cloudshape-echo" --domain "$domain" --timeout 7200 --latency >"$work/results.jsonl" 2>"$work/latency.txt" &
 echo_pid=$!
 "$launch" start --domain "$domain" >/dev/null 2>&1
 next_id=0
 
 if [[ -z "$rates" ]]; then
   read -r -a size_list <<<"$sizes"
-  printf '| points | in-process median (ms) | DDS inject->echo median (ms) | DDS p99 (ms) | overhead (ms) | ratio |\n'
+  printf '| points | in-process median (ms) | DDS inject->echo median (ms) | DDS p99 (ms) | ratio | overhead: DDS minus its own stage times, median (ms) |\n'
   printf '|---:|---:|---:|---:|---:|---:|\n'
   for n in "${size_list[@]}"; do
     cloud="$(box_cloud "$n")"
@@ -102,8 +113,8 @@ if [[ -z "$rates" ]]; then
     lat="$(latency_lines "$next_id" "$reps" | awk '{print $3}')"
     (($(wc -l <<<"$lat") == reps)) || cs_die "not every result came for $n points"
     dds="$(median <<<"$lat")"
-    printf '| %s | %.1f | %.1f | %.1f | %.1f | %.2f |\n' "$n" "$inproc" "$dds" "$(p99 <<<"$lat")" \
-      "$(awk -v a="$dds" -v b="$inproc" 'BEGIN {print a - b}')" "$(awk -v a="$dds" -v b="$inproc" 'BEGIN {print a / b}')"
+    printf '| %s | %.1f | %.1f | %.1f | %.2f | %.1f |\n' "$n" "$inproc" "$dds" "$(p99 <<<"$lat")" \
+      "$(awk -v a="$dds" -v b="$inproc" 'BEGIN {print a / b}')" "$(overheads "$next_id" "$reps" | median)"
     next_id=$((next_id + reps))
   done
   exit 0
@@ -113,31 +124,32 @@ cloud="$(box_cloud "$points")"
 inproc="$(inprocess_median "$cloud" 9)"
 printf 'In-process recognizer, %s points: median %.1f ms per cloud, i.e. %.1f clouds/s on one core.\n\n' \
   "$points" "$inproc" "$(awk -v t="$inproc" 'BEGIN {print 1000 / t}')"
+# The unloaded latency, 10 clouds at 1 cloud/s: a rate whose median stays within one period of
+# it builds no queue.
+"$bin/cloudshape-inject" --domain "$domain" --rate 1 --count 10 --first-id "$next_id" "$cloud" 2>/dev/null
+wait_for_results "$next_id" 10
+unloaded="$(latency_lines "$next_id" 10 | awk '{print $3}' | median)"
+next_id=$((next_id + 10))
+printf 'DDS inject->echo latency at 1 cloud/s: median %.1f ms.\n\n' "$unloaded"
 printf '| target rate (clouds/s) | sent (clouds/s) | delivered (clouds/s) | lost | latency median (ms) | p99 (ms) | sustained |\n'
 printf '|---:|---:|---:|---:|---:|---:|---|\n'
 read -r -a rate_list <<<"$rates"
 best=none
+failed=0
 for rate in "${rate_list[@]}"; do
   sent="$("$bin/cloudshape-inject" --domain "$domain" --rate "$rate" --count "$clouds" --first-id "$next_id" "$cloud" 2>&1 \
           | sed -n 's/.*(\([0-9.]*\) clouds\/s).*/\1/p')"
   wait_for_results "$next_id" "$clouds"
   latency_lines "$next_id" "$clouds" | sort -k5,5n >"$work/step.txt"
   got="$(wc -l <"$work/step.txt")"
-  read -r delivered med p99v sustained < <(awk -v n="$clouds" -v rate="$rate" '
-    function med(a, lo, hi,   m, i, j, t, k) {  # median of a[lo..hi] (copied, sorted)
-      delete b; m = 0; for (i = lo; i <= hi; i++) b[++m] = a[i]
-      for (i = 2; i <= m; i++) { t = b[i]; for (j = i - 1; j >= 1 && b[j] > t; j--) b[j + 1] = b[j]; b[j + 1] = t }
-      k = int((m + 1) / 2); return (m % 2) ? b[k] : (b[k] + b[k + 1]) / 2 }
-    { lat[NR] = $3; t = $8 / 1e9; if (NR == 1 || t < t0) t0 = t; if (NR == 1 || t > t1) t1 = t }
-    END {
-      got = NR; q = int(got / 4); if (q < 1) q = 1
-      delivered = (got > 1 && t1 > t0) ? (got - 1) / (t1 - t0) : 0
-      first = med(lat, 1, q); last = med(lat, got - q + 1, got); all = med(lat, 1, got)
-      ok = (got == n && delivered >= 0.97 * rate && last <= 1.5 * first + 20) ? "yes" : "no"
-      printf "%.2f %.1f nan %s\n", delivered, all, ok }' "$work/step.txt")
+  delivered="$(awk '{t = $8 / 1e9; if (NR == 1 || t < t0) t0 = t; if (NR == 1 || t > t1) t1 = t}
+    END {printf "%.2f", (NR > 1 && t1 > t0) ? (NR - 1) / (t1 - t0) : 0}' "$work/step.txt")"
+  med="$(awk '{print $3}' "$work/step.txt" | median)"
   p99v="$(awk '{print $3}' "$work/step.txt" | p99)"
-  printf '| %s | %s | %s | %d | %s | %.1f | %s |\n' "$rate" "${sent:-?}" "$delivered" "$((clouds - got))" "$med" "$p99v" "$sustained"
-  [[ "$sustained" != yes ]] || best="$rate"
+  sustained="$(awk -v got="$got" -v n="$clouds" -v rate="$rate" -v d="$delivered" -v m="$med" -v p="$p99v" -v u="$unloaded" \
+    'BEGIN {print (got == n && d >= 0.97 * rate && d <= 1.03 * rate && m <= u + 1000 / rate && p <= 3 * u) ? "yes" : "no"}')"
+  printf '| %s | %s | %s | %d | %.1f | %.1f | %s |\n' "$rate" "${sent:-?}" "$delivered" "$((clouds - got))" "$med" "$p99v" "$sustained"
+  if [[ "$sustained" == yes ]]; then ((failed)) || best="$rate"; else failed=1; fi
   next_id=$((next_id + clouds))
 done
-printf '\nHighest sustained rate tried: %s clouds/s of %s points.\n' "$best" "$points"
+printf '\nEvery rate up to %s clouds/s (of those tried, in order) sustained at %s points.\n' "$best" "$points"

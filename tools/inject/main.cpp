@@ -123,19 +123,20 @@ int main(int argc, char** argv) {
           status = 2;
           continue;
         }
-        if (rate > 0) {
-          std::this_thread::sleep_until(next);
-          next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
-        }
         cs::msg::RawCloud m;
         m.header().cloud_id(id);
         m.header().source(fs::path(path).filename().string());
         m.header().object_index(0);
         m.header().object_count(1);
+        m.xyz(cs::dds::to_xyz(cloud.points));
+        if (rate > 0) {
+          std::this_thread::sleep_until(next);
+          next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+        }
+        // Stamped once the sample is filled: latency counts from the write (README "Latency").
         m.header().inject_time_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(
                                       std::chrono::system_clock::now().time_since_epoch())
                                       .count());
-        m.xyz(cs::dds::to_xyz(cloud.points));
         if (!writer.write(m, &g_stop)) break;
         say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(cloud.points.size()) +
             " points)");
