@@ -108,10 +108,14 @@ else
   phase "base image $base imported"
 fi
 
-# The image, built with no network at all: everything comes from the base.
+# The image, built with no network at all: everything comes from the base. The build stage
+# gets a tag of its own, else the prune at exit deletes it (untagged) and with it the cache of
+# the compile step.
 cs_log "podman build (log: $cache/build.log)"
-in_ns podman build --network none -f "$CLOUDSHAPE_REPO/docker/Dockerfile" --build-arg "BASE=$base" \
-  --build-arg "JOBS=$CLOUDSHAPE_JOBS" -t localhost/cloudshape:latest "$CLOUDSHAPE_REPO" \
+build_args=(--network none -f "$CLOUDSHAPE_REPO/docker/Dockerfile" --build-arg "BASE=$base"
+            --build-arg "JOBS=$CLOUDSHAPE_JOBS")
+{ in_ns podman build "${build_args[@]}" --target build -t localhost/cloudshape-build:latest "$CLOUDSHAPE_REPO" &&
+  in_ns podman build "${build_args[@]}" -t localhost/cloudshape:latest "$CLOUDSHAPE_REPO"; } \
   >"$cache/build.log" 2>&1 || { tail -n 30 "$cache/build.log" >&2; cs_die "podman build failed"; }
 phase "image localhost/cloudshape:latest built"
 
