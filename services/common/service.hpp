@@ -119,7 +119,18 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
                participant.domain(), opt.lane, opt.lanes);
 
   In in;
+  bool downstream = true;
   while (!stop) {
+    // Downstream gone (a stage restarting, a link cut past the lease): leave the input in
+    // the upstream queue instead of publishing into the void.
+    if (writer.matched_readers() < opt.subscribers) {
+      if (downstream) spdlog::warn("no subscriber on {}: input paused", out_spec.name);
+      downstream = false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      continue;
+    }
+    if (!downstream) spdlog::info("subscriber back on {}: input resumed", out_spec.name);
+    downstream = true;
     if (!reader.take(in, std::chrono::milliseconds(200))) continue;
     const msg::CloudHeader& h = in.header();
     // Replicas split the work on the cloud id: each cloud is handled by exactly one lane.

@@ -1,6 +1,6 @@
 // cloudshape-echo [--domain N] [--count N] [--timeout S] [--status] [--latency]
-// Prints every shape result as one JSON line, the very object cloudshape-recognize prints
-// (report::result_to_json_line); --status prints the services' status samples instead.
+// Prints every cloud's shape result once as one JSON line, the very object cloudshape-recognize
+// prints (report::result_to_json_line); --status prints the services' status samples instead.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <chrono>
@@ -97,9 +97,10 @@ int main(int argc, char** argv) {
                     return true;
                   });
     }
-    // The solver publishes one result per object: print a cloud once all its objects came.
+    // The solver publishes one result per object: print a cloud once all its objects came,
+    // and once only (a cloud sent again after a fault may come back twice).
     cs::dds::ResultJoiner joiner;
-    return echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
+    const int exit_status = echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
                 [&](cs::msg::ShapeResult& r) {
                   const auto cloud = joiner.add(std::move(r));
                   if (!cloud) return false;
@@ -112,6 +113,11 @@ int main(int argc, char** argv) {
                   }
                   return true;
                 });
+    if (joiner.duplicates() > 0) {
+      std::fprintf(stderr, "%s: dropped %llu duplicate result sample(s)\n", kTool,
+                   static_cast<unsigned long long>(joiner.duplicates()));
+    }
+    return exit_status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kTool, e.what());
     return 1;

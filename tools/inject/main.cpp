@@ -1,6 +1,8 @@
-// cloudshape-inject [--domain N] [--rate HZ] [--loop] FILE_OR_DIR...
+// cloudshape-inject [--domain N] [--rate HZ] [--loop] [--resend-after S] FILE_OR_DIR...
 // Reads clouds with io::read_cloud and publishes each on the raw-cloud topic, once a subscriber
-// (the ingest service) is there. Reports on stderr. Exit: 0, 2 if a file was bad, 1 if no subscriber.
+// (the ingest service) is there, then waits for each cloud's result and sends again the clouds
+// whose result is overdue (README "No lost clouds"). Reports on stderr.
+// Exit: 0, 2 if a file was bad, 1 if no subscriber or a cloud got no result.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
@@ -17,10 +19,12 @@
 #include "dds/topics.hpp"
 #include "io/cloud_reader.hpp"
 #include "io/read_error.hpp"
+#include "pending_clouds.hpp"
 
 namespace {
 namespace cs = cloudshape;
 namespace fs = std::filesystem;
+using cs::inject::Clock;
 constexpr const char* kTool = "cloudshape-inject";
 
 std::atomic<bool> g_stop{false};  // the signal flag
@@ -53,6 +57,42 @@ std::vector<std::string> expand(const std::vector<std::string>& args) {
   return files;
 }
 
+using RawWriter = cs::dds::Writer<decltype(cs::dds::topics::raw_cloud)>;
+
+// The file's points; throws with the problem when it cannot be read or holds none.
+cs::PointList read_points(const std::string& path) {
+  cs::io::CloudFile cloud;
+  try {
+    cloud = cs::io::read_cloud(path);
+  } catch (const cs::io::ReadError& e) {
+    throw std::runtime_error(e.problem().empty() ? std::string(e.what()) : e.problem());
+  }
+  if (cloud.points.empty()) throw std::runtime_error("no usable points");
+  return cloud.points;
+}
+
+// Writes one cloud; false when stopped. While ingest is away (killed, restarting) a sample
+// would go nowhere, so it waits for the subscribers first.
+bool publish(RawWriter& writer, int subscribers, const cs::inject::PendingCloud& c, const cs::PointList& points) {
+  while (writer.matched_readers() < subscribers) {
+    if (g_stop) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  cs::msg::RawCloud m;
+  m.header().cloud_id(c.id);
+  m.header().source(c.source);
+  m.header().object_index(0);
+  m.header().object_count(1);
+  m.header().inject_time_ns(c.inject_time_ns);
+  m.xyz(cs::dds::to_xyz(points));
+  return writer.write(m, &g_stop);
+}
+
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -63,6 +103,9 @@ int main(int argc, char** argv) {
   double wait_s = 60.0;
   int subscribers = 1;
   std::uint64_t first_id = 0;
+  double resend_after_s = 10.0;
+  double result_timeout_s = 120.0;
+  std::size_t max_pending = 256;
   std::vector<std::string> args;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
@@ -70,6 +113,13 @@ int main(int argc, char** argv) {
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
   app.add_option("--subscribers", subscribers, "subscribers to wait for (e.g. ingest replicas)");
   app.add_option("--first-id", first_id, "cloud id of the first cloud sent (ids then count up)");
+  app.add_option("--resend-after", resend_after_s,
+                 "send a cloud again when its result has not come after this many seconds "
+                 "(default 10; 0: send once and do not wait for results)");
+  app.add_option("--result-timeout", result_timeout_s,
+                 "give up waiting for the outstanding results after this many seconds without one (default 120)");
+  app.add_option("--max-pending", max_pending, "clouds sent but without result before sending waits (default 256)")
+      ->check(CLI::PositiveNumber);
   app.add_option("files", args, "cloud files or folders of them")->required();
   try {
     app.parse(argc, argv);
@@ -83,29 +133,62 @@ int main(int argc, char** argv) {
   try {
     cs::dds::Participant participant(cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt),
                                      kTool);
-    cs::dds::Writer<decltype(cs::dds::topics::raw_cloud)> writer(participant, cs::dds::topics::raw_cloud);
+    RawWriter writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
       say("no subscriber on " + std::string(cs::dds::topics::raw_cloud.name) + " after " +
           std::to_string(wait_s) + " s (is cloudshape-ingest running on this domain?)");
       return 1;
     }
+    // Results are watched only now: the chain came up for a real consumer (cloudshape-echo),
+    // not for this reader, so nothing is published before that consumer listens.
+    const bool tracked = resend_after_s > 0;
+    const auto resend_after = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(resend_after_s));
+    cs::inject::PendingClouds pending;
+    std::optional<cs::inject::ResultWatch> watch;
+    if (tracked) {
+      watch.emplace(participant, pending);
+      const auto deadline = Clock::now() + std::chrono::seconds(10);
+      while (watch->matched_writers() < 1 && Clock::now() < deadline && !g_stop) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    }
     int status = 0;
+    // Sends the overdue clouds again, oldest first; false when stopped.
+    const auto resend_overdue = [&] {
+      while (auto c = pending.overdue(Clock::now(), resend_after)) {
+        c->last_sent = Clock::now();
+        ++c->attempts;
+        cs::PointList points;
+        try {
+          points = read_points(c->path);
+        } catch (const std::exception& e) {
+          say(c->path + ": cannot send cloud " + std::to_string(c->id) + " again: " + e.what());
+          pending.complete(c->id, c->source);
+          status = 2;
+          continue;
+        }
+        pending.sent(*c);
+        say("no result for cloud " + std::to_string(c->id) + " (" + c->source + ") after " +
+            std::to_string(resend_after_s) + " s: sending it again (attempt " + std::to_string(c->attempts) + ")");
+        if (!publish(writer, subscribers, *c, points)) return false;
+      }
+      return true;
+    };
     std::uint64_t id = first_id;
     std::size_t sent = 0;
     const auto period = rate > 0 ? std::chrono::duration<double>(1.0 / rate) : std::chrono::duration<double>(0);
-    auto next = std::chrono::steady_clock::now();
+    auto next = Clock::now();
     do {
       for (const std::string& path : files) {
         if (g_stop) break;
-        cs::io::CloudFile cloud;
+        while (tracked && pending.size() >= max_pending && resend_overdue() && !g_stop) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        if (tracked && !resend_overdue()) break;
+        cs::PointList points;
         try {
-          cloud = cs::io::read_cloud(path);
-          if (cloud.points.empty()) throw std::runtime_error("no usable points");
-        } catch (const cs::io::ReadError& e) {
-          say(path + ": " + (e.problem().empty() ? std::string(e.what()) : e.problem()));
-          status = 2;
-          continue;
+          points = read_points(path);
         } catch (const std::exception& e) {
           say(path + ": " + e.what());
           status = 2;
@@ -113,24 +196,30 @@ int main(int argc, char** argv) {
         }
         if (rate > 0) {
           std::this_thread::sleep_until(next);
-          next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+          next += std::chrono::duration_cast<Clock::duration>(period);
         }
-        cs::msg::RawCloud m;
-        m.header().cloud_id(id);
-        m.header().source(fs::path(path).filename().string());
-        m.header().object_index(0);
-        m.header().object_count(1);
-        m.header().inject_time_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                      std::chrono::system_clock::now().time_since_epoch())
-                                      .count());
-        m.xyz(cs::dds::to_xyz(cloud.points));
-        if (!writer.write(m, &g_stop)) break;
-        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(cloud.points.size()) +
-            " points)");
+        cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
+        if (tracked) pending.sent(cloud);
+        if (!publish(writer, subscribers, cloud, points)) break;
+        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(points.size()) + " points)");
         ++id;
         ++sent;
       }
     } while (loop && !g_stop);
+    // Every cloud ends in a result: wait for the outstanding ones, sending again the overdue.
+    auto progress = Clock::now();
+    for (std::size_t left = pending.size(); tracked && left > 0 && !g_stop; left = pending.size()) {
+      if (!resend_overdue()) break;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      if (pending.size() < left) progress = Clock::now();
+      if (Clock::now() - progress > std::chrono::duration<double>(result_timeout_s)) break;
+    }
+    if (tracked && pending.size() > 0) {
+      std::string ids;
+      for (const std::uint64_t missing : pending.ids()) ids += " " + std::to_string(missing);
+      say("no result for " + std::to_string(pending.size()) + " cloud(s):" + ids);
+      status = 1;
+    }
     // Let the subscribers acknowledge everything before the participant goes away.
     if (!writer.wait_for_acknowledgments(std::chrono::seconds(120))) say("not every cloud was acknowledged");
     say("sent " + std::to_string(sent) + " cloud(s)");
