@@ -130,6 +130,16 @@ awk '/latency_ms/ && $6 ~ /^soak_/ {print $3}' "$work/latency.txt" | sort -g | a
   END {
     if (NR == 0) {print "soak latency: no results"; exit}
     printf "soak latency ms: p50 %.1f  p90 %.1f  p99 %.1f  max %.1f  (%d clouds)\n", pct(0.5), pct(0.9), pct(0.99), v[NR], NR}'
+# Sustainable: the median latency of the last quarter of the soak is not above the first's
+# (a queue that grows would raise it).
+awk '/latency_ms/ && $6 ~ /^soak_/ {print $3}' "$work/latency.txt" | awk '
+  {v[NR] = $1}
+  function median(from, to,  n, i, j, t, w) {
+    n = 0; for (i = from; i <= to; i++) w[++n] = v[i]
+    for (i = 2; i <= n; i++) {t = w[i]; for (j = i - 1; j > 0 && w[j] > t; j--) w[j + 1] = w[j]; w[j + 1] = t}
+    return w[int((n + 1) / 2)]}
+  END {if (NR >= 8) printf "soak latency median, first quarter %.1f ms, last quarter %.1f ms\n",
+         median(1, int(NR / 4)), median(NR - int(NR / 4) + 1, NR)}'
 # Memory growth: the peak RSS of the soak's second half against that of its first half
 # (peaks, because the heap breathes by a few MB between two samples; a leak raises them).
 half=$((soak_start + (soak_end - soak_start) / 2))

@@ -17,6 +17,7 @@
 
 #include "../tools/process.hpp"
 #include "background.hpp"
+#include "test_env.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
@@ -29,17 +30,6 @@ const std::vector<std::string> kStages = {"solver", "classifier", "keypoints", "
 // Sent again when no result came for this long: above a cloud's latency on a loaded machine
 // (small clouds: tens of ms), below the 4 s lease so a fault costs seconds, not minutes.
 const std::string kResendAfterS = "3";
-
-int domain_offset() {
-  const char* v = std::getenv("CLOUDSHAPE_TEST_DOMAIN_OFFSET");
-  return v == nullptr ? 0 : std::atoi(v);
-}
-
-std::string make_temp_dir(const std::string& name) {
-  std::string templ = (fs::temp_directory_path() / ("cloudshape-fault-" + name + "-XXXXXX")).string();
-  if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-  return templ;
-}
 
 void run_or_throw(const std::vector<std::string>& argv) {
   const ProcessResult r = run_process(argv);
@@ -97,7 +87,7 @@ std::vector<std::string> make_clouds(const std::string& dir, int count, std::map
 // `prefix` runs a process elsewhere (ip netns exec NS) by stage name.
 class FaultRig {
  public:
-  FaultRig(const std::string& name, int domain) : dir_(make_temp_dir(name)), domain_(std::to_string(domain + domain_offset())) {}
+  FaultRig(const std::string& name, int domain) : dir_(make_temp_dir("fault-" + name)), domain_(std::to_string(domain + domain_offset())) {}
   ~FaultRig() {
     if (!::testing::Test::HasFailure()) fs::remove_all(dir_);
   }

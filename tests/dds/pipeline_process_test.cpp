@@ -17,6 +17,7 @@
 
 #include "../tools/process.hpp"
 #include "background.hpp"
+#include "test_env.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
@@ -31,23 +32,10 @@ const std::vector<std::string> kStages = {"ingest", "planes", "keypoints", "clas
 constexpr auto kStartWait = 60s;
 constexpr int kEchoTimeoutS = 180;
 
-// CLOUDSHAPE_TEST_DOMAIN_OFFSET shifts every test's domain, so that two checkouts can run
-// their DDS tests on one machine at the same time without hearing each other.
-int domain_offset() {
-  const char* v = std::getenv("CLOUDSHAPE_TEST_DOMAIN_OFFSET");
-  return v == nullptr ? 0 : std::atoi(v);
-}
-
-std::string make_temp_dir(const std::string& name) {
-  std::string templ = (fs::temp_directory_path() / ("cloudshape-dds-" + name + "-XXXXXX")).string();
-  if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-  return templ;
-}
-
 // The services, echo and inject of one test on one domain; everything is stopped at the end.
 class Pipeline {
  public:
-  Pipeline(const std::string& name, int domain) : dir_(make_temp_dir(name)), domain_(domain + domain_offset()) {}
+  Pipeline(const std::string& name, int domain) : dir_(make_temp_dir("dds-" + name)), domain_(domain + domain_offset()) {}
   ~Pipeline() {
     if (!::testing::Test::HasFailure()) fs::remove_all(dir_);
   }
