@@ -10,7 +10,7 @@
 # Prints clouds sent, results, lost (sent - distinct results), clouds sent again, latency
 # percentiles (inject -> echo), and each service's peak RSS in each half of the soak and
 # under overload. Exit 1 when a cloud was lost, or a service's peak RSS grew by more than
-# M MB (default 20) from the first half of the soak to the second. Needs a build.
+# M MB (default 40) from the first half of the soak to the second. Needs a build.
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
 CLOUDSHAPE_LOG_TAG=soak.sh
@@ -21,7 +21,7 @@ seconds=60
 points=100000
 rate=""
 overload=30
-max_growth_mb=20
+max_growth_mb=40
 domain=$((60 + RANDOM % 20))
 while (($#)); do
   case "$1" in
