@@ -115,9 +115,11 @@ int main(int argc, char** argv) {
   app.add_option("--first-id", first_id, "cloud id of the first cloud sent (ids then count up)");
   app.add_option("--resend-after", resend_after_s,
                  "send a cloud again when its result has not come after this many seconds "
-                 "(default 10; 0: send once and do not wait for results)");
+                 "(default 10; 0: send once and do not wait for results)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--result-timeout", result_timeout_s,
-                 "give up waiting for the outstanding results after this many seconds without one (default 120)");
+                 "give up waiting for the outstanding results after this many seconds without one (default 120)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--max-pending", max_pending, "clouds sent but without result before sending waits (default 256)")
       ->check(CLI::PositiveNumber);
   app.add_option("files", args, "cloud files or folders of them")->required();
