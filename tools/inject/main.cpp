@@ -20,6 +20,7 @@
 #include "io/cloud_reader.hpp"
 #include "io/read_error.hpp"
 #include "pending_clouds.hpp"
+#include "result_watch.hpp"
 
 namespace {
 namespace cs = cloudshape;
@@ -158,9 +159,7 @@ int main(int argc, char** argv) {
     int status = 0;
     // Sends the overdue clouds again, oldest first; false when stopped.
     const auto resend_overdue = [&] {
-      while (auto c = pending.overdue(Clock::now(), resend_after)) {
-        c->last_sent = Clock::now();
-        ++c->attempts;
+      while (const auto c = pending.resend_overdue(Clock::now(), resend_after)) {
         cs::PointList points;
         try {
           points = read_points(c->path);
@@ -170,7 +169,6 @@ int main(int argc, char** argv) {
           status = 2;
           continue;
         }
-        pending.sent(*c);
         say("no result for cloud " + std::to_string(c->id) + " (" + c->source + ") after " +
             std::to_string(resend_after_s) + " s: sending it again (attempt " + std::to_string(c->attempts) + ")");
         if (!publish(writer, subscribers, *c, points)) return false;
