@@ -14,13 +14,7 @@
 #include <thread>
 #include <vector>
 
-#include "dds/convert.hpp"
-#include "dds/endpoints.hpp"
-#include "dds/topics.hpp"
-#include "io/cloud_reader.hpp"
-#include "io/read_error.hpp"
-#include "pending_clouds.hpp"
-#include "result_watch.hpp"
+#include "delivery.hpp"
 
 namespace {
 namespace cs = cloudshape;
@@ -58,37 +52,6 @@ std::vector<std::string> expand(const std::vector<std::string>& args) {
   return files;
 }
 
-using RawWriter = cs::dds::Writer<decltype(cs::dds::topics::raw_cloud)>;
-
-// The file's points; throws with the problem when it cannot be read or holds none.
-cs::PointList read_points(const std::string& path) {
-  cs::io::CloudFile cloud;
-  try {
-    cloud = cs::io::read_cloud(path);
-  } catch (const cs::io::ReadError& e) {
-    throw std::runtime_error(e.problem().empty() ? std::string(e.what()) : e.problem());
-  }
-  if (cloud.points.empty()) throw std::runtime_error("no usable points");
-  return cloud.points;
-}
-
-// Writes one cloud; false when stopped. While ingest is away (killed, restarting) a sample
-// would go nowhere, so it waits for the subscribers first.
-bool publish(RawWriter& writer, int subscribers, const cs::inject::PendingCloud& c, const cs::PointList& points) {
-  while (writer.matched_readers() < subscribers) {
-    if (g_stop) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  cs::msg::RawCloud m;
-  m.header().cloud_id(c.id);
-  m.header().source(c.source);
-  m.header().object_index(0);
-  m.header().object_count(1);
-  m.header().inject_time_ns(c.inject_time_ns);
-  m.xyz(cs::dds::to_xyz(points));
-  return writer.write(m, &g_stop);
-}
-
 std::int64_t now_ns() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
       .count();
@@ -102,26 +65,23 @@ int main(int argc, char** argv) {
   double rate = 0.0;
   bool loop = false;
   double wait_s = 60.0;
-  int subscribers = 1;
   std::uint64_t first_id = 0;
-  double resend_after_s = 10.0;
-  double result_timeout_s = 120.0;
-  std::size_t max_pending = 256;
+  cs::inject::DeliverySettings delivery_settings;
   std::vector<std::string> args;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
-  app.add_option("--subscribers", subscribers, "subscribers to wait for (e.g. ingest replicas)");
+  app.add_option("--subscribers", delivery_settings.subscribers, "subscribers to wait for (e.g. ingest replicas)");
   app.add_option("--first-id", first_id, "cloud id of the first cloud sent (ids then count up)");
-  app.add_option("--resend-after", resend_after_s,
+  app.add_option("--resend-after", delivery_settings.resend_after_s,
                  "send a cloud again when its result has not come after this many seconds "
                  "(default 10; 0: send once and do not wait for results)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--result-timeout", result_timeout_s,
+  app.add_option("--result-timeout", delivery_settings.result_timeout_s,
                  "give up waiting for the outstanding results after this many seconds without one (default 120)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--max-pending", max_pending, "clouds sent but without result before sending waits (default 256)")
+  app.add_option("--max-pending", delivery_settings.max_pending, "clouds sent but without result before sending waits (default 256)")
       ->check(CLI::PositiveNumber);
   app.add_option("files", args, "cloud files or folders of them")->required();
   try {
@@ -136,8 +96,8 @@ int main(int argc, char** argv) {
   try {
     cs::dds::Participant participant(cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt),
                                      kTool);
-    RawWriter writer(participant, cs::dds::topics::raw_cloud);
-    if (!writer.wait_for_readers(subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
+    cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
+    if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
       say("no subscriber on " + std::string(cs::dds::topics::raw_cloud.name) + " after " +
           std::to_string(wait_s) + " s (is cloudshape-ingest running on this domain?)");
@@ -145,36 +105,8 @@ int main(int argc, char** argv) {
     }
     // Results are watched only now: the chain came up for a real consumer (cloudshape-echo),
     // not for this reader, so nothing is published before that consumer listens.
-    const bool tracked = resend_after_s > 0;
-    const auto resend_after = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(resend_after_s));
-    cs::inject::PendingClouds pending;
-    std::optional<cs::inject::ResultWatch> watch;
-    if (tracked) {
-      watch.emplace(participant, pending);
-      const auto deadline = Clock::now() + std::chrono::seconds(10);
-      while (watch->matched_writers() < 1 && Clock::now() < deadline && !g_stop) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      }
-    }
+    cs::inject::Delivery delivery(participant, writer, delivery_settings, g_stop, say);
     int status = 0;
-    // Sends the overdue clouds again, oldest first; false when stopped.
-    const auto resend_overdue = [&] {
-      while (const auto c = pending.resend_overdue(Clock::now(), resend_after)) {
-        cs::PointList points;
-        try {
-          points = read_points(c->path);
-        } catch (const std::exception& e) {
-          say(c->path + ": cannot send cloud " + std::to_string(c->id) + " again: " + e.what());
-          pending.complete(c->id, c->source);
-          status = 2;
-          continue;
-        }
-        say("no result for cloud " + std::to_string(c->id) + " (" + c->source + ") after " +
-            std::to_string(resend_after_s) + " s: sending it again (attempt " + std::to_string(c->attempts) + ")");
-        if (!publish(writer, subscribers, *c, points)) return false;
-      }
-      return true;
-    };
     std::uint64_t id = first_id;
     std::size_t sent = 0;
     const auto period = rate > 0 ? std::chrono::duration<double>(1.0 / rate) : std::chrono::duration<double>(0);
@@ -182,13 +114,9 @@ int main(int argc, char** argv) {
     do {
       for (const std::string& path : files) {
         if (g_stop) break;
-        while (tracked && pending.size() >= max_pending && resend_overdue() && !g_stop) {
-          std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        }
-        if (tracked && !resend_overdue()) break;
         cs::PointList points;
         try {
-          points = read_points(path);
+          points = cs::inject::read_points(path);
         } catch (const std::exception& e) {
           say(path + ": " + e.what());
           status = 2;
@@ -198,26 +126,20 @@ int main(int argc, char** argv) {
           std::this_thread::sleep_until(next);
           next += std::chrono::duration_cast<Clock::duration>(period);
         }
-        cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
-        if (tracked) pending.sent(cloud);
-        if (!publish(writer, subscribers, cloud, points)) break;
+        const cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
+        if (!delivery.send(cloud, points)) break;
         say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(points.size()) + " points)");
         ++id;
         ++sent;
       }
     } while (loop && !g_stop);
     // Every cloud ends in a result: wait for the outstanding ones, sending again the overdue.
-    auto progress = Clock::now();
-    for (std::size_t left = pending.size(); tracked && left > 0 && !g_stop; left = pending.size()) {
-      if (!resend_overdue()) break;
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      if (pending.size() < left) progress = Clock::now();
-      if (Clock::now() - progress > std::chrono::duration<double>(result_timeout_s)) break;
-    }
-    if (tracked && pending.size() > 0) {
+    const std::vector<std::uint64_t> missing = delivery.finish();
+    if (delivery.lost_a_file()) status = 2;
+    if (!missing.empty()) {
       std::string ids;
-      for (const std::uint64_t missing : pending.ids()) ids += " " + std::to_string(missing);
-      say("no result for " + std::to_string(pending.size()) + " cloud(s):" + ids);
+      for (const std::uint64_t m : missing) ids += " " + std::to_string(m);
+      say("no result for " + std::to_string(missing.size()) + " cloud(s):" + ids);
       status = 1;
     }
     // Let the subscribers acknowledge everything before the participant goes away.
