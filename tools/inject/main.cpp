@@ -1,4 +1,4 @@
-// cloudshape-inject [--domain N] [--rate HZ] [--loop] FILE_OR_DIR...
+// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop] FILE_OR_DIR...
 // Reads clouds with io::read_cloud and publishes each on the raw-cloud topic, once a subscriber
 // (the ingest service) is there. Reports on stderr. Exit: 0, 2 if a file was bad, 1 if no subscriber.
 #include <CLI/CLI.hpp>
@@ -14,6 +14,7 @@
 
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
+#include "dds/security.hpp"
 #include "dds/topics.hpp"
 #include "io/cloud_reader.hpp"
 #include "io/read_error.hpp"
@@ -58,6 +59,7 @@ std::vector<std::string> expand(const std::vector<std::string>& args) {
 int main(int argc, char** argv) {
   CLI::App app{"Publishes point-cloud files on the cloudshape raw-cloud topic.", kTool};
   int domain = -1;
+  std::string security;
   double rate = 0.0;
   bool loop = false;
   double wait_s = 60.0;
@@ -65,6 +67,8 @@ int main(int argc, char** argv) {
   std::uint64_t first_id = 0;
   std::vector<std::string> args;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  app.add_option("--security", security,
+                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
@@ -81,8 +85,10 @@ int main(int argc, char** argv) {
 
   const std::vector<std::string> files = expand(args);
   try {
-    cs::dds::Participant participant(cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt),
-                                     kTool);
+    cs::dds::Participant participant(
+        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
+        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
+                                                                  : std::nullopt));
     cs::dds::Writer<decltype(cs::dds::topics::raw_cloud)> writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
