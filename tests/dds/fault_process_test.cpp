@@ -15,9 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "../tools/process.hpp"
-#include "background.hpp"
-#include "test_env.hpp"
+#include "pipeline_harness.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
@@ -25,8 +23,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-const std::string kBin = CLOUDSHAPE_BIN_DIR;
-const std::vector<std::string> kStages = {"solver", "classifier", "keypoints", "planes", "ingest"};
 // Sent again when no result came for this long: above a cloud's latency on a loaded machine
 // (small clouds: tens of ms), below the 4 s lease so a fault costs seconds, not minutes.
 const std::string kResendAfterS = "3";
@@ -59,12 +55,8 @@ std::vector<std::string> make_clouds(const std::string& dir, int count, std::map
     if (e.path().extension() != ".json") bases.push_back(e.path().string());
   }
   std::sort(bases.begin(), bases.end());
-  std::vector<std::string> argv = {kBin + "/cloudshape-recognize"};
-  argv.insert(argv.end(), bases.begin(), bases.end());
-  const ProcessResult r = run_process(argv);
-  if (r.exit_code != 0) throw std::runtime_error("cloudshape-recognize failed: " + r.err);
   std::map<std::string, std::string> base_shapes;
-  for (const std::string& line : lines_of(r.out)) {
+  for (const std::string& line : recognize(bases)) {
     const pipeline::RecognitionResult res = report::result_from_json_line(line);
     std::string s;
     for (const auto& o : res.objects) s += o.shape + " ";

@@ -1,4 +1,4 @@
-// cloudshape-inject [--domain N] [--rate HZ] [--loop] [--resend-after S] FILE_OR_DIR...
+// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop] [--resend-after S] FILE_OR_DIR...
 // Reads clouds with io::read_cloud and publishes each on the raw-cloud topic, once a subscriber
 // (the ingest service) is there, then waits for each cloud's result and sends again the clouds
 // whose result is overdue (README "No lost clouds"). Reports on stderr.
@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "dds/security.hpp"
 #include "delivery.hpp"
 
 namespace {
@@ -62,6 +63,7 @@ std::int64_t now_ns() {
 int main(int argc, char** argv) {
   CLI::App app{"Publishes point-cloud files on the cloudshape raw-cloud topic.", kTool};
   int domain = -1;
+  std::string security;
   double rate = 0.0;
   bool loop = false;
   double wait_s = 60.0;
@@ -69,6 +71,8 @@ int main(int argc, char** argv) {
   cs::inject::DeliverySettings delivery_settings;
   std::vector<std::string> args;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  app.add_option("--security", security,
+                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
@@ -94,8 +98,10 @@ int main(int argc, char** argv) {
 
   const std::vector<std::string> files = expand(args);
   try {
-    cs::dds::Participant participant(cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt),
-                                     kTool);
+    cs::dds::Participant participant(
+        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
+        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
+                                                                  : std::nullopt));
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
