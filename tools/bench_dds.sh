@@ -4,8 +4,10 @@
 #
 #   tools/bench_dds.sh [--reps N] [--sizes "10000 100000 1000000"]       # latency, one cloud at a time
 #   tools/bench_dds.sh --rates "5 10 20" [--clouds N] [--points P]        # steady-rate throughput
-#   common: [--domain N]
+#   common: [--domain N] [--secure]
 #
+# --secure: every participant with DDS Security (a fresh tools/make-certs.sh PKI; README
+# "DDS Security"), to measure what authentication and encryption cost.
 # Latency: from the moment cloudshape-inject writes the sample (system clock in the header) to
 # the moment cloudshape-echo takes the result: serialisation, transport, the five stages and
 # every IDL <-> core conversion; clouds sent one at a time; median and p99 of --reps runs
@@ -30,6 +32,7 @@ rates=""
 clouds=100
 points=100000
 domain=$((60 + RANDOM % 20))
+secure=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift ;;
@@ -38,7 +41,8 @@ while (($#)); do
     --clouds) clouds="$2"; shift ;;
     --points) points="$2"; shift ;;
     --domain) domain="$2"; shift ;;
-    -h|--help) sed -n '2,20s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --secure) secure=1 ;;
+    -h|--help) sed -n '2,22s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) cs_die "unknown argument: $1" ;;
   esac
   shift
@@ -56,6 +60,10 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+if ((secure)); then
+  "$CLOUDSHAPE_REPO/tools/make-certs.sh" "$work/pki" 2>/dev/null
+  export CLOUDSHAPE_SECURITY_DIR="$work/pki"  # read by launch.sh, echo and inject
+fi
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR==0) print "nan"; else if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
 p99() { sort -g | awk '{v[NR]=$1} END {if (NR==0) print "nan"; else {i=int(NR*0.99); if (i<NR*0.99) i++; print v[i]}}'; }

@@ -15,107 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "../tools/process.hpp"
-#include "background.hpp"
-#include "same_results.hpp"
+#include "pipeline_harness.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
 namespace {
 namespace fs = std::filesystem;
-using namespace std::chrono_literals;
-
-const std::string kBin = CLOUDSHAPE_BIN_DIR;
-const std::vector<std::string> kStages = {"ingest", "planes", "keypoints", "classifier", "solver"};
-
-// Generous everywhere: these run on a loaded 2-core machine next to a parallel build.
-constexpr auto kStartWait = 60s;
-constexpr int kEchoTimeoutS = 180;
-
-// CLOUDSHAPE_TEST_DOMAIN_OFFSET shifts every test's domain, so that two checkouts can run
-// their DDS tests on one machine at the same time without hearing each other.
-int domain_offset() {
-  const char* v = std::getenv("CLOUDSHAPE_TEST_DOMAIN_OFFSET");
-  return v == nullptr ? 0 : std::atoi(v);
-}
-
-std::string make_temp_dir(const std::string& name) {
-  std::string templ = (fs::temp_directory_path() / ("cloudshape-dds-" + name + "-XXXXXX")).string();
-  if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-  return templ;
-}
-
-// The services, echo and inject of one test on one domain; everything is stopped at the end.
-class Pipeline {
- public:
-  Pipeline(const std::string& name, int domain) : dir_(make_temp_dir(name)), domain_(domain + domain_offset()) {}
-  ~Pipeline() {
-    if (!::testing::Test::HasFailure()) fs::remove_all(dir_);
-  }
-
-  const std::string& dir() const { return dir_; }
-  std::string domain() const { return std::to_string(domain_); }
-
-  void start_service(const std::string& stage, std::vector<std::string> extra = {},
-                     const std::string& tag = "") {
-    std::vector<std::string> argv = {kBin + "/cloudshape-" + stage, "--domain", domain()};
-    argv.insert(argv.end(), extra.begin(), extra.end());
-    const std::string log = log_path(stage + tag);
-    services_.emplace_back(stage + tag, procs_.start(argv, log, log));
-  }
-
-  void start_echo(int count) {
-    echo_ = procs_.start({kBin + "/cloudshape-echo", "--domain", domain(), "--count", std::to_string(count),
-                          "--timeout", std::to_string(kEchoTimeoutS)},
-                         dir_ + "/echo.jsonl", log_path("echo"));
-  }
-
-  ProcessResult inject(const std::vector<std::string>& files) {
-    std::vector<std::string> argv = {kBin + "/cloudshape-inject", "--domain", domain(), "--wait",
-                                     std::to_string(kStartWait.count())};
-    argv.insert(argv.end(), files.begin(), files.end());
-    return run_process(argv);
-  }
-
-  // Another subscriber program (stdout to dir/out_name, stderr to its log).
-  pid_t start_other(const std::vector<std::string>& argv, const std::string& out_name) {
-    return procs_.start(argv, dir_ + "/" + out_name, log_path(fs::path(out_name).stem().string()));
-  }
-  int wait_other(pid_t pid) { return procs_.wait(pid, std::chrono::seconds(kEchoTimeoutS + 30)); }
-
-  // Echo's exit status once it printed its --count results (or timed out).
-  int wait_echo() { return procs_.wait(echo_, std::chrono::seconds(kEchoTimeoutS + 30)); }
-  std::vector<std::string> echo_lines() const { return lines_of(read_text(dir_ + "/echo.jsonl")); }
-
-  // SIGTERM to every service: each must stop cleanly with status 0.
-  void stop_services() {
-    for (const auto& [name, pid] : services_) {
-      EXPECT_EQ(procs_.stop(pid, 30s), 0) << name << " did not stop cleanly; log:\n" << read_text(log_path(name));
-    }
-    services_.clear();
-  }
-
-  std::string log_path(const std::string& name) const { return dir_ + "/" + name + ".log"; }
-
- private:
-  std::string dir_;
-  int domain_;
-  Background procs_;
-  std::vector<std::pair<std::string, pid_t>> services_;
-  pid_t echo_ = -1;
-};
-
-std::vector<std::string> synthetic_clouds(const std::string& dir, int points) {
-  const ProcessResult r = run_process({kBin + "/cloudshape-synth", "suite", "--out", dir, "--points",
-                                       std::to_string(points), "--seed", "11", "--count", "1"});
-  if (r.exit_code != 0) throw std::runtime_error("cloudshape-synth failed: " + r.err);
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    if (e.path().extension() == ".pcd") files.push_back(e.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // A box and a sphere far apart in one .xyz file: two objects, two entries in one result.
 std::string two_object_cloud(const std::string& dir) {
@@ -150,66 +55,9 @@ std::vector<std::string> real_clouds() {
   return files;
 }
 
-std::map<std::string, pipeline::RecognitionResult> by_source(const std::vector<std::string>& lines) {
-  std::map<std::string, pipeline::RecognitionResult> results;
-  for (const std::string& line : lines) {
-    if (line.empty()) continue;
-    pipeline::RecognitionResult r = report::result_from_json_line(line);
-    EXPECT_EQ(results.count(r.source), 0u) << "two results for " << r.source;
-    results[r.source] = r;
-  }
-  return results;
-}
-
-bool close(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
-
-// The acceptance criterion: same shape, dimensions equal within 1e-6 relative (and the rest too).
-void expect_same_results(const std::vector<std::string>& expected_lines, const std::vector<std::string>& actual_lines) {
-  std::string report;
-  for (const std::string& d : result_differences(expected_lines, actual_lines)) report += d + "\n";
-  EXPECT_TRUE(report.empty()) << report;
-}
-
-std::vector<std::string> recognize(const std::vector<std::string>& files) {
-  std::vector<std::string> argv = {kBin + "/cloudshape-recognize"};
-  argv.insert(argv.end(), files.begin(), files.end());
-  const ProcessResult r = run_process(argv);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return lines_of(r.out);
-}
-
 int count_matches(const std::string& text, const std::string& pattern) {
   const std::regex re(pattern);
   return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
-}
-
-// The lines of cloudshape-cyclone-echo and examples/subscribe_results.cpp, one per object
-// (source \t i/n \t shape \t name=value,... \t reason), against recognize's results.
-void expect_object_lines_match(const std::map<std::string, pipeline::RecognitionResult>& expected,
-                               const std::vector<std::string>& lines, std::size_t count) {
-  ASSERT_EQ(lines.size(), count);
-  for (const std::string& line : lines) {
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
-    ASSERT_GE(f.size(), 4u) << line;
-    SCOPED_TRACE(line);
-    ASSERT_EQ(expected.count(f[0]), 1u);
-    const pipeline::ObjectResult& e = expected.at(f[0]).objects.at(0);
-    EXPECT_EQ(f[2], e.shape);
-    for (const auto& [name, value] : e.dimensions) {
-      std::stringstream d(f[3]);
-      bool found = false;
-      for (std::string kv; std::getline(d, kv, ',');) {
-        const auto eq = kv.find('=');
-        if (kv.substr(0, eq) == name) {
-          found = true;
-          EXPECT_TRUE(close(std::stod(kv.substr(eq + 1)), value)) << name;
-        }
-      }
-      EXPECT_TRUE(found) << name;
-    }
-  }
 }
 
 TEST(DdsPipeline, EchoPrintsWhatRecognizePrints) {
@@ -282,6 +130,35 @@ TEST(DdsPipeline, AFailingStageStillGivesOneResult) {
     EXPECT_NE(r.objects[0].reason.find("--max-points"), std::string::npos) << r.objects[0].reason;
   }
   p.stop_services();
+}
+
+// The lines of cloudshape-cyclone-echo and examples/subscribe_results.cpp, one per object
+// (source \t i/n \t shape \t name=value,... \t reason), against recognize's results.
+void expect_object_lines_match(const std::map<std::string, pipeline::RecognitionResult>& expected,
+                               const std::vector<std::string>& lines, std::size_t count) {
+  ASSERT_EQ(lines.size(), count);
+  for (const std::string& line : lines) {
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string x; std::getline(ss, x, '\t');) f.push_back(x);
+    ASSERT_GE(f.size(), 4u) << line;
+    SCOPED_TRACE(line);
+    ASSERT_EQ(expected.count(f[0]), 1u);
+    const pipeline::ObjectResult& e = expected.at(f[0]).objects.at(0);
+    EXPECT_EQ(f[2], e.shape);
+    for (const auto& [name, value] : e.dimensions) {
+      std::stringstream d(f[3]);
+      bool found = false;
+      for (std::string kv; std::getline(d, kv, ',');) {
+        const auto eq = kv.find('=');
+        if (kv.substr(0, eq) == name) {
+          found = true;
+          EXPECT_TRUE(close(std::stod(kv.substr(eq + 1)), value)) << name;
+        }
+      }
+      EXPECT_TRUE(found) << name;
+    }
+  }
 }
 
 // Cross-vendor: a Cyclone DDS program, built from the same IDL with idlc, reads the results.

@@ -16,6 +16,7 @@ CLOUDSHAPE_DEB_PACKAGES=(
   "${CLOUDSHAPE_BUILD_PACKAGES[@]}"
   cyclonedds-dev cyclonedds-tools
   docker-compose
+  openssl tcpdump
 )
 # Only for the long container test (tests/docker/podman_stack_test.sh installs them itself):
 # podman with runc (crun refuses these machines' hybrid cgroups), podman-compose, and
