@@ -97,11 +97,14 @@ int main(int argc, char** argv) {
     }
   }
 
+  // The configuration's input limits: a bigger file is refused before it is read in full.
+  const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
+                                  static_cast<std::size_t>(cfg.input.max_bytes)};
   int status = 0;
   for (const std::string& path : files) {
     cs::io::CloudFile cloud;
     try {
-      cloud = cs::io::read_cloud(path);
+      cloud = cs::io::read_cloud(path, limits);
     } catch (const cs::io::ReadError& e) {
       report_failure(read_error_text(path, e));
       status = kExitBadInput;
