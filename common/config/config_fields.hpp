@@ -10,6 +10,7 @@ template <class F>
 void visit_fields(InputConfig& c, F&& f) {
   f("max_points", c.max_points);
   f("max_bytes", c.max_bytes);
+  f("max_coordinate", c.max_coordinate);
 }
 
 template <class F>

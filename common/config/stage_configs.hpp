@@ -12,6 +12,9 @@ namespace cloudshape::config {
 struct InputConfig {
   std::int64_t max_points = 5'000'000;      // points of one cloud, counting non-finite ones
   std::int64_t max_bytes = 1'000'000'000;   // bytes of one file, or of one raw cloud's coordinates (24 per point)
+  // Larger coordinates are no measurement in any unit, and sums of their squares or centroids
+  // of them overflow to infinity (found by fuzzing): such a cloud is refused.
+  double max_coordinate = 1e30;
 };
 
 struct PreprocessConfig {

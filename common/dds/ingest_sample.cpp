@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <sstream>
 
 #include "dds/convert.hpp"
 #include "pipeline/preprocess.hpp"
@@ -39,6 +40,13 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
   if (out.points.empty()) {
     throw RawCloudError("no usable points (all " + std::to_string(count) +
                         " points have NaN or infinite coordinates)");
+  }
+  const std::size_t far = first_point_beyond(out.points, limits.max_coordinate);
+  if (far < out.points.size()) {
+    std::ostringstream text;
+    text << "a point at (" << out.points[far].transpose() << "), beyond input.max_coordinate "
+         << limits.max_coordinate;
+    throw RawCloudError(text.str());
   }
   return out;
 }

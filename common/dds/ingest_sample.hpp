@@ -24,7 +24,8 @@ struct RawCloudPoints {
 };
 
 // Throws RawCloudError when xyz is not whole x y z triples, holds no point, more points than
-// limits.max_points or more coordinate bytes than limits.max_bytes, or no finite point.
+// limits.max_points or more coordinate bytes than limits.max_bytes, no finite point, or a
+// point beyond limits.max_coordinate.
 RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputConfig& limits);
 
 // One filtered cloud per object of `in`, object_index/object_count set (one with object_count 0

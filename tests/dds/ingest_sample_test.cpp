@@ -8,8 +8,13 @@
 #include <limits>
 #include <random>
 
+#include <fastcdr/exceptions/BadParamException.h>
+#include <fastdds/rtps/common/SerializedPayload.h>
+
+#include "dds/checked_type.hpp"
 #include "dds/convert.hpp"
 #include "dds/ingest_sample.hpp"
+#include "dds/topics.hpp"
 #include "pipeline/split_objects.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -100,6 +105,16 @@ TEST(IngestSample, MoreBytesThanTheLimitIsRefused) {
               HasSubstr("24000 bytes of coordinates, more than input.max_bytes 23999"));
 }
 
+TEST(IngestSample, ACoordinateBeyondTheLimitIsRefused) {
+  // Found by fuzz_ingest: centroids of coordinates near 1e308 overflow to infinity.
+  std::vector<double> xyz = to_xyz(box_points(1000));
+  xyz[3 * 500 + 1] = -2e30;
+  EXPECT_THAT(refusal(raw(xyz)), HasSubstr("beyond input.max_coordinate 1e+30"));
+  config::PipelineConfig cfg;
+  cfg.input.max_coordinate = 3e30;
+  EXPECT_EQ(refusal(raw(xyz), cfg), "");
+}
+
 TEST(IngestSample, ARawCloudsOwnObjectCountIsIgnored) {
   // A sensor program that knows nothing of objects leaves object_count at 0.
   const auto out = ingest_raw_cloud(raw(to_xyz(box_points(3000)), 0), config::PipelineConfig{});
@@ -128,6 +143,30 @@ TEST(IngestSample, ARefusedCloudBecomesOneFailedObject) {
   EXPECT_EQ(f.header().object_index(), 0u);
   EXPECT_EQ(f.header().object_count(), 1u);  // so the echo does not wait for 5 objects
   EXPECT_EQ(f.header().source(), "scan.pcd");
+}
+
+TEST(IngestSample, AnUndecodableSampleBecomesOneFailedCloudInsteadOfAnException) {
+  // Found by fuzz_ingest: a CDR boolean byte that is neither 0 nor 1 makes Fast CDR throw out of
+  // the generated type's deserialize, i.e. out of DataReader::take in the service.
+  msg::RawCloud sent = raw({1, 2, 3});
+  sent.header().source("");
+  msg::RawCloudPubSubType bare;
+  eprosima::fastrtps::rtps::SerializedPayload_t payload(bare.m_typeSize + 64);
+  ASSERT_TRUE(bare.serialize(&sent, &payload));
+  // 4 encapsulation + cloud_id 8 + empty source 5 (+3 padding) + 2 x 4 object fields +
+  // inject_time 8 + 5 timings x 8: the error flag is byte 76.
+  ASSERT_EQ(payload.data[76], 0);
+  payload.data[76] = 2;
+
+  msg::RawCloud received;
+  EXPECT_THROW(bare.deserialize(&payload, &received), eprosima::fastcdr::exception::BadParamException);
+  CheckedPubSubType<decltype(topics::raw_cloud)> checked;
+  received.xyz({9, 9, 9});  // left over from an earlier sample: must not survive
+  EXPECT_FALSE(checked.deserialize(&payload, &received));
+  EXPECT_TRUE(received.header().error());
+  EXPECT_EQ(received.header().object_count(), 1u);
+  EXPECT_THAT(received.header().error_text(), HasSubstr("does not deserialize"));
+  EXPECT_TRUE(received.xyz().empty());
 }
 
 }  // namespace

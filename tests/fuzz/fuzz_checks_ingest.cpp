@@ -1,10 +1,11 @@
-// The ingest fuzz check: the bytes are a raw-cloud sample as the DataReader deserializes it
-// (CDR with encapsulation, RawCloudPubSubType), then the very function the service calls.
+// The ingest fuzz check: the bytes are a raw-cloud sample as the ingest DataReader deserializes
+// it (CDR with encapsulation, the checked RawCloud type), then the very function the service calls.
 #include <cmath>
 #include <fastdds/rtps/common/SerializedPayload.h>
 
-#include "cloudshapePubSubTypes.h"
+#include "dds/checked_type.hpp"
 #include "dds/ingest_sample.hpp"
+#include "dds/topics.hpp"
 #include "fuzz_checks.hpp"
 
 namespace cloudshape::fuzz {
@@ -31,23 +32,31 @@ std::string filtered_problems(const std::vector<msg::FilteredCloud>& out, std::s
 }  // namespace
 
 std::string check_raw_cloud_sample(std::string_view bytes) {
-  msg::RawCloudPubSubType type;
+  // The type the services register (dds::Participant::topic), not the bare generated one.
+  dds::CheckedPubSubType<decltype(dds::topics::raw_cloud)> type;
   eprosima::fastrtps::rtps::SerializedPayload_t payload(static_cast<std::uint32_t>(bytes.size()));
   std::copy(bytes.begin(), bytes.end(), payload.data);
   payload.length = static_cast<std::uint32_t>(bytes.size());
   msg::RawCloud cloud;
-  // What Fast DDS does with a sample that does not deserialize is its business: not ours.
-  if (!type.deserialize(&payload, &cloud)) return {};
+  const bool decoded = type.deserialize(&payload, &cloud);
+  if (!decoded && !cloud.header().error()) return "an undecodable sample is not marked failed";
 
-  config::PipelineConfig cfg;
-  cfg.input.max_points = 20'000;  // keeps one fuzz input to milliseconds
-  try {
-    return filtered_problems(dds::ingest_raw_cloud(cloud, cfg), cloud.xyz().size() / 3);
-  } catch (const dds::RawCloudError& e) {
-    const msg::FilteredCloud refused = dds::refused_raw_cloud(cloud, "ingest", e.what());
-    if (!refused.header().error() || refused.header().object_count() != 1) return "a refusal is not one failed object";
-    return {};
+  // As service::run does: a failed sample is passed on, anything else goes to the stage.
+  std::string refusal;
+  if (cloud.header().error()) {
+    refusal = cloud.header().error_text();
+  } else {
+    config::PipelineConfig cfg;
+    cfg.input.max_points = 20'000;  // keeps one fuzz input to milliseconds
+    try {
+      return filtered_problems(dds::ingest_raw_cloud(cloud, cfg), cloud.xyz().size() / 3);
+    } catch (const dds::RawCloudError& e) {
+      refusal = e.what();
+    }
   }
+  const msg::FilteredCloud refused = dds::refused_raw_cloud(cloud, "ingest", refusal);
+  if (!refused.header().error() || refused.header().object_count() != 1) return "a refusal is not one failed object";
+  return {};
 }
 
 }  // namespace cloudshape::fuzz

@@ -87,6 +87,7 @@ class RecognizeCli : public ::testing::Test {
     write_text(path("small_points.yaml"), "input:\n  max_points: 5999\n");
     write_text(path("small_bytes.yaml"), "input:\n  max_bytes: 1000\n");
     write_degenerate_clouds();
+    write_text(path("far_point.xyz"), "0 0 0\n1 0 0\n0 1 1e200\n");
     write_truncated_files();
     write_text(path("broken.yaml"), "preprocess: [unclosed\n");
   }
@@ -228,6 +229,15 @@ TEST_F(RecognizeCli, InputLimitsFromTheConfigurationRefuseBiggerFiles) {
   lines = failures_for(bytes, path("box.xyz"));
   ASSERT_EQ(lines.size(), 1u) << bytes.err;
   EXPECT_NE(lines[0].find("more than the limit of 1000 bytes"), std::string::npos) << lines[0];
+}
+
+TEST_F(RecognizeCli, CoordinatesBeyondTheLimitAreRefused) {
+  const ProcessResult r = run({path("far_point.xyz"), path("one_point.xyz")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(results(r).size(), 1u) << r.out;
+  const auto lines = failures_for(r, path("far_point.xyz"));
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_NE(lines[0].find("beyond input.max_coordinate 1e+30"), std::string::npos) << lines[0];
 }
 
 TEST_F(RecognizeCli, CloudsWithNoSolidAreUnknownWithTheirReason) {

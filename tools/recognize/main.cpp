@@ -14,6 +14,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,15 @@ int main(int argc, char** argv) {
                           ? " (" + std::to_string(cloud.non_finite_dropped) +
                                 " points read, all with NaN or infinite coordinates)"
                           : " (the file holds no points)"));
+      status = kExitBadInput;
+      continue;
+    }
+    if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
+        far < cloud.points.size()) {
+      std::ostringstream text;
+      text << path << ": a point at (" << cloud.points[far].transpose()
+           << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
+      report_failure(text.str());
       status = kExitBadInput;
       continue;
     }
