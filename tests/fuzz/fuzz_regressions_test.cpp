@@ -35,6 +35,8 @@ std::vector<fs::path> inputs_of(const std::string& target) {
   return files;
 }
 
+void PrintTo(const Target& target, std::ostream* os) { *os << target.name; }
+
 class FuzzRegressions : public ::testing::TestWithParam<Target> {};
 
 TEST_P(FuzzRegressions, EveryStoredInputIsReadOrRefused) {
