@@ -4,7 +4,6 @@
 // line from cloudshape-echo that names the input (source) and the problem (reason).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <cmath>
 #include <filesystem>
@@ -13,11 +12,10 @@
 #include <map>
 #include <random>
 
-#include "background.hpp"
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
 #include "dds/topics.hpp"
-#include "report/result_json.hpp"
+#include "pipeline_harness.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
 
@@ -27,15 +25,8 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using ::testing::HasSubstr;
 
-const std::string kBin = CLOUDSHAPE_BIN_DIR;
-constexpr int kDomain = 50;  // + CLOUDSHAPE_TEST_DOMAIN_OFFSET, as every DDS test
-constexpr int kEchoTimeoutS = 180;
-constexpr int kMaxPoints = 5000;  // input.max_points of this test's configuration
-
-int test_domain() {
-  const char* offset = std::getenv("CLOUDSHAPE_TEST_DOMAIN_OFFSET");
-  return kDomain + (offset == nullptr ? 0 : std::atoi(offset));
-}
+constexpr int kDomain = 50;        // + CLOUDSHAPE_TEST_DOMAIN_OFFSET, as every DDS test
+constexpr int kMaxPoints = 5000;   // input.max_points of this test's configuration
 
 PointList solid_points(synth::ShapeKind kind, std::size_t n) {
   std::mt19937_64 rng(21);
@@ -79,28 +70,17 @@ std::vector<Sample> samples() {
 }
 
 TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
-  std::string dir = (fs::temp_directory_path() / "cloudshape-dds-bad-samples-XXXXXX").string();
-  ASSERT_NE(mkdtemp(dir.data()), nullptr);
-  const std::string config = dir + "/pipeline.yaml";
+  Pipeline p("bad-samples", kDomain);
+  const std::string config = p.dir() + "/pipeline.yaml";
   std::ofstream(config) << "input:\n  max_points: " << kMaxPoints << "\n";
-  const std::string domain = std::to_string(test_domain());
   const std::vector<Sample> sent = samples();
-
-  Background procs;
-  const pid_t echo = procs.start({kBin + "/cloudshape-echo", "--domain", domain, "--count",
-                                  std::to_string(sent.size()), "--timeout", std::to_string(kEchoTimeoutS)},
-                                 dir + "/echo.jsonl", dir + "/echo.log");
-  std::vector<std::pair<std::string, pid_t>> services;
-  for (const char* stage : {"ingest", "planes", "keypoints", "classifier", "solver"}) {
-    const std::string log = dir + "/" + stage + ".log";
-    services.emplace_back(stage, procs.start({kBin + "/cloudshape-" + stage, "--domain", domain, "--config", config},
-                                             log, log));
-  }
+  p.start_echo(static_cast<int>(sent.size()));
+  for (const std::string& stage : kStages) p.start_service(stage, {"--config", config});
 
   {
-    dds::Participant participant(test_domain(), "bad-samples-test");
+    dds::Participant participant(std::stoi(p.domain()), "bad-samples-test");
     dds::Writer<decltype(dds::topics::raw_cloud)> writer(participant, dds::topics::raw_cloud);
-    ASSERT_TRUE(writer.wait_for_readers(1, 60s)) << "ingest did not come up";
+    ASSERT_TRUE(writer.wait_for_readers(1, kStartWait)) << "ingest did not come up";
     std::uint64_t id = 0;
     for (const Sample& s : sent) {
       msg::RawCloud m;
@@ -112,17 +92,10 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
     }
     EXPECT_TRUE(writer.wait_for_acknowledgments(120s));
   }
-  ASSERT_EQ(procs.wait(echo, std::chrono::seconds(kEchoTimeoutS + 30)), 0)
-      << "echo did not print one result per sample; its log:\n" << read_text(dir + "/echo.log");
+  ASSERT_EQ(p.wait_echo(), 0) << "echo did not print one result per sample; its log:\n"
+                              << read_text(p.log_path("echo"));
 
-  std::map<std::string, pipeline::RecognitionResult> results;
-  std::ifstream lines(dir + "/echo.jsonl");
-  for (std::string line; std::getline(lines, line);) {
-    if (line.empty()) continue;
-    pipeline::RecognitionResult r = report::result_from_json_line(line);
-    EXPECT_EQ(results.count(r.source), 0u) << "two results for " << r.source;
-    results[r.source] = r;
-  }
+  const std::map<std::string, pipeline::RecognitionResult> results = by_source(p.echo_lines());
   ASSERT_EQ(results.size(), sent.size());
   const auto reason_of = [&](const std::string& source) {
     const pipeline::RecognitionResult& r = results.at(source);
@@ -150,10 +123,7 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
   EXPECT_EQ(results.at("some_nan").points_in, 3998u);
   EXPECT_EQ(results.at("object_count_zero").points_in, 4000u);
 
-  for (const auto& [stage, pid] : services) {
-    EXPECT_EQ(procs.stop(pid, 30s), 0) << stage << " did not stop cleanly:\n" << read_text(dir + "/" + stage + ".log");
-  }
-  if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+  p.stop_services();
 }
 
 }  // namespace

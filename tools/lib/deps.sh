@@ -11,6 +11,7 @@ CLOUDSHAPE_DEB_PACKAGES=(
   libfastrtps-dev libfastcdr-dev fastddsgen
   cyclonedds-dev cyclonedds-tools
   docker-compose
+  openssl tcpdump
 )
 # Only tools/fuzz.sh needs these: clang and its libFuzzer runtime (libclang_rt.fuzzer).
 # shellcheck disable=SC2034  # read by tools/fuzz.sh
