@@ -68,9 +68,12 @@ cs_ensure_packages() {
   ((${#missing[@]} == 0)) || cs_die "still missing after install: ${missing[*]}"
 }
 
-# Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR. CLOUDSHAPE_CMAKE_ARGS (space-separated)
-# is passed to the configure step, e.g. "-DCLOUDSHAPE_SANITIZE=ON".
+# Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR: every target, or only the targets
+# given as arguments. CLOUDSHAPE_CMAKE_ARGS (space-separated) is passed to the configure step,
+# e.g. "-DCLOUDSHAPE_SANITIZE=ON".
 cs_configure_and_build() {
+  local -a targets=()
+  (($#)) && targets=(--target "$@")
   local -a gen=() extra=()
   read -r -a extra <<<"${CLOUDSHAPE_CMAKE_ARGS:-}"
   local cache="$CLOUDSHAPE_BUILD_DIR/CMakeCache.txt"
@@ -92,5 +95,5 @@ cs_configure_and_build() {
   fi
   cs_log "build: $CLOUDSHAPE_JOBS parallel jobs"
   # Build progress goes to stderr so that stdout carries only results (demo.sh: JSON lines).
-  cmake --build "$CLOUDSHAPE_BUILD_DIR" --parallel "$CLOUDSHAPE_JOBS" >&2 || cs_die "build failed"
+  cmake --build "$CLOUDSHAPE_BUILD_DIR" --parallel "$CLOUDSHAPE_JOBS" "${targets[@]}" >&2 || cs_die "build failed"
 }
