@@ -1,5 +1,6 @@
 // The reader fuzz checks: every point a reader returns is finite and within the limits, every
 // mesh index points at a vertex; refusing the input with a ReadError is always allowed.
+#include <cstdint>
 #include <string>
 
 #include "fuzz_checks.hpp"
