@@ -71,6 +71,7 @@ cs_ensure_packages() {
 # Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR: every target, or only the targets
 # given as arguments. CLOUDSHAPE_CMAKE_ARGS (space-separated) is passed to the configure step,
 # e.g. "-DCLOUDSHAPE_SANITIZE=ON".
+# shellcheck disable=SC2120  # most callers build every target
 cs_configure_and_build() {
   local -a targets=()
   (($#)) && targets=(--target "$@")
