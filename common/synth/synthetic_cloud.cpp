@@ -1,6 +1,7 @@
 #include "synth/synthetic_cloud.hpp"
 #include "synth/perturb.hpp"
 #include "synth/sample_solid.hpp"
+#include "synth/solid_visibility.hpp"
 #include "synth/visibility.hpp"
 
 #include <random>
@@ -46,8 +47,12 @@ SyntheticCloud make_synthetic_cloud(const std::vector<SolidSpec>& objects,
   const auto sample = [&](std::size_t m) {
     return sample_objects(objects, areas, total_area, m, rng);
   };
+  // The exact test, not the z-buffer: no sliver of back face leaks past a silhouette.
+  const auto keep_visible = [&](const PointList& points) {
+    return visible_on_solids(points, objects, *options.view);
+  };
   cloud.points = options.view
-                     ? sample_visible(sample, total_area, options.points, *options.view, rng)
+                     ? sample_visible(sample, keep_visible, options.points, rng)
                      : sample(options.points);
   add_gaussian_noise(cloud.points, options.noise_sigma, rng);
   const std::size_t clean = cloud.points.size();

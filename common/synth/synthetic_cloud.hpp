@@ -28,7 +28,7 @@ struct SyntheticCloud {
 };
 
 // Splits options.points among the objects by surface area, samples them, keeps what the camera
-// sees (objects may occlude each other; the count is kept at options.points via sample_visible),
+// sees (exactly: solid_visibility.hpp; the count is kept at options.points via sample_visible),
 // then adds noise and outliers, in that order. All randomness comes from `seed`, so the same
 // arguments give the same cloud. Throws std::invalid_argument for an empty object list or bad
 // options.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -143,6 +144,24 @@ TestCloud single_view_cloud(const Drawn& d, std::uint64_t cloud_seed, double siz
       points.end());
   TestCloud cloud;
   cloud.truths.push_back(shown_truth(d.spec, points));
+  // Where the camera looks from, relative to the solid: the angle between its local axes[0]
+  // (a cone's base-to-apex direction) and the direction to the camera, and between world up.
+  const Eigen::Vector3d to_camera = (*options.view - d.spec.pose.center).normalized();
+  char note[96];
+  std::snprintf(note, sizeof note, "view_to_axis0=%.0fdeg axis0_to_up=%.0fdeg",
+                std::acos(std::clamp(to_camera.dot(d.spec.pose.axes.row(0)), -1.0, 1.0)) * 180 / kPi,
+                std::acos(std::clamp(d.spec.pose.axes(0, 2), -1.0, 1.0)) * 180 / kPi);
+  cloud.note = note;
+  if (d.spec.kind == ShapeKind::cone) {
+    // How much of the visible cloud is lateral surface rather than base disc.
+    std::size_t lateral = 0;
+    for (const auto& p : points)
+      lateral += (p - d.spec.pose.center).dot(d.spec.pose.axes.row(0)) > 0.01 * size ? 1 : 0;
+    std::snprintf(note, sizeof note, " lateral=%.1f%% true_height=%.4g", 
+                  100.0 * lateral / std::max<std::size_t>(points.size(), 1),
+                  d.spec.dimensions[1].second);
+    cloud.note += note;
+  }
   cloud.points = std::move(points);
   return cloud;
 }
