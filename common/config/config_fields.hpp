@@ -73,6 +73,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("apex_conditioning", c.apex_conditioning);
   f("cap_band", c.cap_band);
   f("face_slab", c.face_slab);
+  f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
   f("max_size_ratio", c.max_size_ratio);
   f("sector_min_share", c.sector_min_share);

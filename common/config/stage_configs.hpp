@@ -77,6 +77,7 @@ struct SolveConfig {
   double apex_conditioning = 0.01;       // tangent planes meeting less decisively than this (eigenvalue ratio) have no apex
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
+  double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
