@@ -20,6 +20,8 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("split_objects", c.split_objects);
   f("object_gap", c.object_gap);
   f("min_object_fraction", c.min_object_fraction);
+  f("fragment_max_width", c.fragment_max_width);
+  f("fragment_max_share", c.fragment_max_share);
 }
 
 template <class F>

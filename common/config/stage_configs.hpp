@@ -28,6 +28,11 @@ struct PreprocessConfig {
   bool split_objects = true;
   double object_gap = 2.0;
   double min_object_fraction = 0.02;
+  // A component that is a narrow strip (spread across its length below fragment_max_width
+  // resolutions) and smaller than fragment_max_share of the largest one is a fragment (edge
+  // shadow, mixed pixels, a sliver of back face), not an object.
+  double fragment_max_width = 2.0;
+  double fragment_max_share = 0.2;
 };
 
 struct PlanesConfig {
