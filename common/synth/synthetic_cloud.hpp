@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geometry/point_cloud.hpp"
+#include "synth/density.hpp"
 #include "synth/ground_truth.hpp"
 #include "synth/ground_truth_json.hpp"
 
@@ -19,6 +20,7 @@ struct CloudOptions {
   double noise_sigma = 0.0;    // absolute, per coordinate
   double outlier_fraction = 0.0;
   std::optional<Eigen::Vector3d> view;  // camera position; hidden points removed when set
+  DensityVariation density;             // uneven sampling; the count is still `points`
 };
 
 struct SyntheticCloud {

@@ -224,8 +224,8 @@ TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double
 }  // namespace
 
 const std::vector<std::string>& accuracy_conditions() {
-  static const std::vector<std::string> names = {"clean",      "noise", "outliers", "single_view",
-                                                 "table_view", "multi", "real"};
+  static const std::vector<std::string> names = {
+      "clean", "noise", "outliers", "density", "single_view", "table_view", "multi", "real"};
   return names;
 }
 
@@ -236,6 +236,9 @@ std::string describe_condition(const std::string& c) {
   if (c == "single_view")
     return "one camera 3 sizes away, uniform over the upper hemisphere; points in the lowest "
            "2% of the solid's z range dropped (table); truth = extents shown";
+  if (c == "density")
+    return "complete surface; density falls with the squared distance from a point 3 sizes "
+           "away (random direction), and 6 patches lose up to 80% of their points";
   if (c == "table_view")
     return "the solid at rest on a face, cap or side (random), camera 3 sizes away, 15-75 deg "
            "above the table, any azimuth; lowest 2% of z dropped (table); truth = extents shown";
@@ -259,7 +262,7 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
   // Stream ids in the order the conditions were added, not the report's, so a new condition
   // moves no existing cloud.
   static const std::vector<std::string> stream_order = {
-      "clean", "noise", "outliers", "single_view", "multi", "real", "table_view"};
+      "clean", "noise", "outliers", "single_view", "multi", "real", "table_view", "density"};
   const auto pos = std::find(stream_order.begin(), stream_order.end(), condition);
   if (pos == stream_order.end()) throw std::invalid_argument("unknown condition '" + condition + "'");
   const std::uint64_t cloud_seed = stream(o.seed, 2 + (pos - stream_order.begin()), shape, i);
@@ -281,6 +284,13 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
                             : condition == "outliers" ? 0.01 * size
                                                       : 0.0;
       options.outlier_fraction = condition == "outliers" ? 0.03 : 0.0;
+      if (condition == "density") {
+        std::mt19937_64 rng(cloud_seed ^ 0xde);
+        std::normal_distribution<double> gauss(0.0, 1.0);
+        const Eigen::Vector3d dir = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
+        options.density.falloff_from = d.spec.pose.center + 3.0 * o.solid_size * dir;
+        options.density.patchiness = 0.8;
+      }
       cloud.points = synth::make_synthetic_cloud({d.spec}, options, cloud_seed).points;
       cloud.truths.push_back(truth_of(d.spec));
     }
