@@ -22,6 +22,11 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("min_object_fraction", c.min_object_fraction);
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_max_share", c.fragment_max_share);
+  f("remove_support_plane", c.remove_support_plane);
+  f("support_band", c.support_band);
+  f("support_min_share", c.support_min_share);
+  f("support_margin", c.support_margin);
+  f("support_max_overlap", c.support_max_overlap);
 }
 
 template <class F>

@@ -33,6 +33,15 @@ struct PreprocessConfig {
   // shadow, mixed pixels, a sliver of back face), not an object.
   double fragment_max_width = 2.0;
   double fragment_max_share = 0.2;
+  // Real scenes: a dominant plane holding support_min_share of the points, within
+  // support_band resolutions, reaching beyond the rest (standing on one side of it) on three
+  // of four sides by support_margin of the rest's extent, and with at most support_max_overlap of
+  // the rest over where it was seen (objects hide the table they stand on), is a table or floor: removed first.
+  bool remove_support_plane = true;
+  double support_band = 2.0;
+  double support_min_share = 0.25;
+  double support_margin = 0.2;
+  double support_max_overlap = 0.9;
 };
 
 struct PlanesConfig {

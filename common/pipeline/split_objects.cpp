@@ -8,6 +8,7 @@
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/detail/union_find.hpp"
 #include "geometry/voxel_grid.hpp"
+#include "pipeline/support_plane.hpp"
 
 namespace cloudshape::pipeline {
 using geometry::detail::UnionFind;
@@ -29,9 +30,11 @@ double spread_across(const PointList& points) {
 
 }  // namespace
 
-std::vector<PointList> split_objects(const PointList& points, double resolution,
+std::vector<PointList> split_objects(const PointList& scene, double resolution,
                                      const config::PreprocessConfig& cfg, std::size_t* dropped) {
   if (dropped) *dropped = 0;
+  // The table or floor would join every object standing on it into one.
+  const PointList points = remove_support_plane(scene, resolution, cfg);
   const double cell = cfg.object_gap * resolution;
   if (!cfg.split_objects || points.empty() || !(cell > 0.0)) return {points};
   const geometry::Bounds b = geometry::bounding_box(points);

@@ -9,7 +9,8 @@
 
 namespace cloudshape::pipeline {
 
-// Components of `points`, largest first. Cells of edge cfg.object_gap * resolution that
+// Components of `points`, largest first, after a support plane (table, floor) is cut away
+// (remove_support_plane). Cells of edge cfg.object_gap * resolution that
 // touch (26-neighbourhood) join, so objects farther apart than 2*sqrt(3) cells are always
 // split and points closer than one cell always joined. Components with fewer than
 // cfg.min_object_fraction of the points are clutter and dropped (counted in *dropped), and so

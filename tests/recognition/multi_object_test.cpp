@@ -91,6 +91,39 @@ TEST(MultiObject, ANarrowStripIsAFragmentButASmallSolidIsAnObject) {
   EXPECT_EQ(both.objects[1].shape, "sphere");
 }
 
+// Objects standing on a table much larger than they are: the table goes, the objects stay.
+TEST(MultiObject, ATableUnderTheObjectsIsRemoved) {
+  const std::vector<synth::SolidSpec> solids = {
+      synth::make_solid(synth::ShapeKind::box, {3, 2, 1}, at(0, 0, 0.5, 0.0)),
+      synth::make_solid(synth::ShapeKind::cylinder, {0.8, 2.0}, [] {
+        synth::Pose p;  // axis (local x) up: standing on a cap
+        p.center = Eigen::Vector3d(4, 1, 1.0);
+        p.axes = Eigen::AngleAxisd(-1.5707963267948966, Eigen::Vector3d::UnitY()).toRotationMatrix().transpose();
+        return p;
+      }())};
+  synth::CloudOptions opts;
+  opts.points = 20000;
+  opts.view = Eigen::Vector3d(2, -12, 10);
+  PointList points = synth::make_synthetic_cloud(solids, opts, 12).points;
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-6.0, 8.0);
+  for (int i = 0; i < 30000; ++i) {  // the table top, hidden under the objects
+    const Point p(u(rng), u(rng) - 1.0, 0.0);
+    const bool under_box = std::abs(p.x()) < 1.5 && std::abs(p.y()) < 1.0;
+    const bool under_cylinder = (p - Point(4, 1, 0)).norm() < 0.8;
+    if (!under_box && !under_cylinder) points.push_back(p);
+  }
+  const auto cfg = config::PipelineConfig{};
+  const auto result = pipeline::recognize_cloud(points, cfg, "table");
+  ASSERT_EQ(result.objects.size(), 2u);
+  std::vector<std::string> shapes{result.objects[0].shape, result.objects[1].shape};
+  std::sort(shapes.begin(), shapes.end());
+  EXPECT_EQ(shapes, (std::vector<std::string>{"box", "cylinder"}));
+  config::PipelineConfig keep_table;
+  keep_table.preprocess.remove_support_plane = false;
+  EXPECT_EQ(pipeline::recognize_cloud(points, keep_table, "table").objects.size(), 1u);
+}
+
 TEST(SingleView, ABoxSeenFromOneSideIsPartial) {
   const std::vector<synth::SolidSpec> solids = {
       synth::make_solid(synth::ShapeKind::box, {3, 2, 1}, at(0, 0, 0, 0.3))};
