@@ -15,7 +15,7 @@ namespace cloudshape::pipeline {
 namespace {
 
 constexpr int kIterations = 300;         // hypotheses; the support is the plane most hit
-constexpr std::size_t kScoreSamples = 3000;
+constexpr std::size_t kScoreSamples = 1000;  // scoring sample: a 25% plane is +-1.4%
 constexpr double kOneSided = 0.8;        // share of the rest that must stand on one side
 constexpr double kCellResolutions = 3.0;  // occupancy cell of the plane, resolutions (no gaps)
 
