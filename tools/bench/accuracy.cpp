@@ -35,24 +35,14 @@ SampleRow sample_row(const TestCloud& cloud, const pipeline::RecognitionResult& 
   return row;
 }
 
-std::string dims_text(const std::vector<std::pair<std::string, double>>& dims) {
-  std::string s;
-  for (const auto& [name, v] : dims) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%s%s=%.4g", s.empty() ? "" : ",", name.c_str(), v);
-    s += buf;
-  }
-  return s;
-}
-
 // One line per cloud: what it holds, what came out, so a failing cloud can be found by name.
 void print_cloud_line(const TestCloud& cloud, const pipeline::RecognitionResult& r) {
   std::string truths, results;
-  for (const auto& t : cloud.truths) truths += " " + t.shape + "{" + dims_text(t.dimensions) + "}";
+  for (const auto& t : cloud.truths) truths += " " + t.shape + "{" + dimensions_text(t.dimensions) + "}";
   for (const auto& o : r.objects) {
     char buf[48];
     std::snprintf(buf, sizeof buf, " conf=%.2f%s", o.confidence, o.partial ? " partial" : "");
-    results += " " + o.shape + "{" + dims_text(o.dimensions) + "}" + buf +
+    results += " " + o.shape + "{" + dimensions_text(o.dimensions) + "}" + buf +
                (o.reason.empty() ? "" : " (" + o.reason + ")");
   }
   std::fprintf(stderr, "cloud %s points=%zu %s| truth:%s | got:%s\n", cloud.source.c_str(),
