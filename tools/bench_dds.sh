@@ -2,8 +2,10 @@
 # Latency of the DDS pipeline (inject -> echo, five services, one host) against the
 # in-process recognizer, for box clouds of 10k, 100k and 1M points. Prints a Markdown table.
 #
-#   tools/bench_dds.sh [--reps N] [--sizes "10000 100000 1000000"] [--domain N]
+#   tools/bench_dds.sh [--reps N] [--sizes "10000 100000 1000000"] [--domain N] [--secure]
 #
+# --secure: every participant with DDS Security (a fresh tools/make-certs.sh PKI; README
+# "DDS Security"), to measure what authentication and encryption cost.
 # DDS latency: from the moment cloudshape-inject writes the sample (system clock in the
 # header) to the moment cloudshape-echo takes the result: serialisation, transport, the
 # five stages and every IDL <-> core conversion. Clouds are sent one at a time (--rate low
@@ -18,12 +20,14 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 reps=9
 sizes="10000 100000 1000000"
 domain=$((60 + RANDOM % 20))
+secure=0
 while (($#)); do
   case "$1" in
     --reps) reps="$2"; shift ;;
     --sizes) sizes="$2"; shift ;;
     --domain) domain="$2"; shift ;;
-    -h|--help) sed -n '2,12s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --secure) secure=1 ;;
+    -h|--help) sed -n '2,13s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) cs_die "unknown argument: $1" ;;
   esac
   shift
@@ -41,6 +45,10 @@ cleanup() {
   rm -rf "$work"
 }
 trap cleanup EXIT
+if ((secure)); then
+  "$CLOUDSHAPE_REPO/tools/make-certs.sh" "$work/pki" 2>/dev/null
+  export CLOUDSHAPE_SECURITY_DIR="$work/pki"  # read by launch.sh, echo and inject
+fi
 
 median() { sort -g | awk '{v[NR]=$1} END {if (NR==0) print "nan"; else if (NR%2) print v[(NR+1)/2]; else print (v[NR/2]+v[NR/2+1])/2}'; }
 

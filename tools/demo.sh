@@ -2,7 +2,7 @@
 # Installs what is missing, builds build/ (Release), makes the sample clouds and runs the whole
 # recognition pipeline on them: one JSON line per cloud on stdout (progress on stderr).
 #
-#   tools/demo.sh
+#   tools/demo.sh [--secure]
 #
 # Samples (in build/samples/, regenerated deterministically on every run):
 #   synthetic/  one cloud per shape from cloudshape-synth suite (fixed seed)
@@ -15,6 +15,8 @@
 # (logs in build/logs/), cloudshape-echo prints one JSON line per cloud (the same objects as
 # the recognizer's), cloudshape-inject publishes the clouds, and the services are stopped.
 # CLOUDSHAPE_DOMAIN picks the DDS domain (default 0); traffic stays on this host.
+# --secure: the DDS part with DDS Security (tools/make-certs.sh makes the test PKI in
+# build/pki, every participant authenticates and encrypts; README "DDS Security").
 # Exit status: 0 when every cloud was read and every DDS result arrived.
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
@@ -22,8 +24,10 @@ CLOUDSHAPE_LOG_TAG=demo.sh
 # shellcheck source-path=SCRIPTDIR source=lib/deps.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
+secure=0
 case "${1:-}" in
   "") ;;
+  --secure) secure=1 ;;
   -h|--help) sed -n '2,20s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
   *) cs_die "unknown argument: $1 (see --help)" ;;
 esac
@@ -93,6 +97,11 @@ domain="${CLOUDSHAPE_DOMAIN:-0}"
 launch="$CLOUDSHAPE_REPO/tools/launch.sh"
 export CLOUDSHAPE_BUILD_DIR
 "$launch" stop >/dev/null 2>&1 || true  # leftovers of an interrupted run
+if ((secure)); then
+  "$CLOUDSHAPE_REPO/tools/make-certs.sh" "$CLOUDSHAPE_BUILD_DIR/pki"
+  export CLOUDSHAPE_SECURITY_DIR="$CLOUDSHAPE_BUILD_DIR/pki"  # read by launch.sh, echo and inject
+  cs_log "dds: DDS Security on (PKI $CLOUDSHAPE_SECURITY_DIR)"
+fi
 cs_log "dds: starting the five services on domain $domain (logs: $CLOUDSHAPE_BUILD_DIR/logs)"
 "$launch" start --domain "$domain"
 echo_pid=""

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # Starts / stops the five cloudshape DDS services natively, logs in files (one per service).
 #
-#   tools/launch.sh start [--domain N] [--replicas STAGE=N]... [--config FILE]
+#   tools/launch.sh start [--domain N] [--replicas STAGE=N]... [--config FILE] [--security DIR]
 #   tools/launch.sh stop            # SIGTERM each service, SIGKILL after 30 s
 #   tools/launch.sh status          # a few status samples (cloudshape-echo --status)
 #   tools/launch.sh run [...]       # start, then stop on Ctrl-C (foreground)
 #
 # Stages: ingest planes keypoints classifier solver. `--replicas keypoints=2` runs two
 # keypoints replicas (lanes 0 and 1, each cloud to exactly one) and makes planes wait for both.
+# --security DIR (else CLOUDSHAPE_SECURITY_DIR): DDS Security with the PKI tools/make-certs.sh
+# made in DIR; echo, inject and `status` then need it too (export CLOUDSHAPE_SECURITY_DIR).
 # Logs and pids: $CLOUDSHAPE_LOG_DIR, default build/logs/. Binaries: build/bin/
 # (CLOUDSHAPE_BUILD_DIR). Domain: --domain, else CLOUDSHAPE_DOMAIN, else 0.
 # Services read input only once their output has a subscriber: start cloudshape-echo (or any
@@ -23,7 +25,7 @@ bin="$CLOUDSHAPE_BUILD_DIR/bin"
 logs="${CLOUDSHAPE_LOG_DIR:-$CLOUDSHAPE_BUILD_DIR/logs}"
 pids="$logs/services.pids"
 
-usage() { sed -n '2,15s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+usage() { sed -n '2,17s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 
 upstream_of() {  # the stage that publishes what $1 reads
   case "$1" in
@@ -33,12 +35,13 @@ upstream_of() {  # the stage that publishes what $1 reads
 }
 
 start() {
-  local domain="${CLOUDSHAPE_DOMAIN:-0}" config="" spec stage n
+  local domain="${CLOUDSHAPE_DOMAIN:-0}" config="" security="${CLOUDSHAPE_SECURITY_DIR:-}" spec stage n
   declare -A replicas=()
   while (($#)); do
     case "$1" in
       --domain) domain="$2"; shift ;;
       --config) config="$2"; shift ;;
+      --security) security="$2"; shift ;;
       --replicas)
         spec="$2"; stage="${spec%%=*}"; n="${spec#*=}"
         [[ " ${STAGES[*]} " == *" $stage "* && "$n" =~ ^[1-9][0-9]*$ ]] || cs_die "bad --replicas $spec"
@@ -52,6 +55,7 @@ start() {
   : >"$pids"
   local -a common=(--domain "$domain")
   [[ -z "$config" ]] || common+=(--config "$config")
+  [[ -z "$security" ]] || common+=(--security "$security")
   local s lanes lane down subs
   for s in "${STAGES[@]}"; do
     [[ -x "$bin/cloudshape-$s" ]] || cs_die "$bin/cloudshape-$s not built (cmake --build $CLOUDSHAPE_BUILD_DIR)"
@@ -67,7 +71,7 @@ start() {
       "$bin/cloudshape-$s" "${common[@]}" --lane "$lane" --lanes "$lanes" --subscribers "$subs" \
         >>"$logs/$name.log" 2>&1 &
       printf '%s %s\n' "$!" "$name" >>"$pids"
-      cs_log "started $name (pid $!, domain $domain, log $logs/$name.log)"
+      cs_log "started $name (pid $!, domain $domain, security ${security:-off}, log $logs/$name.log)"
     done
   done
 }

@@ -5,6 +5,8 @@
 #include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
 #include <mutex>
 
+#include "dds/security.hpp"
+
 namespace cloudshape::dds {
 namespace fdds = eprosima::fastdds::dds;
 
@@ -59,7 +61,8 @@ std::string qos_file_path() {
   return CLOUDSHAPE_SOURCE_QOS;
 }
 
-Participant::Participant(int domain, const std::string& name) : domain_(domain) {
+Participant::Participant(int domain, const std::string& name, const std::optional<std::string>& security_dir)
+    : domain_(domain), secured_(security_dir.has_value()) {
   load_profiles_once();
   const char* env = std::getenv("CLOUDSHAPE_DDS_PROFILE");
   const std::string profile = (env != nullptr && *env != '\0') ? env : kDefaultParticipantProfile;
@@ -69,10 +72,15 @@ Participant::Participant(int domain, const std::string& name) : domain_(domain) 
     throw DdsError("no participant profile '" + profile + "' in " + qos_file_path());
   }
   qos.name(name);
+  if (security_dir) enable_security(qos, *security_dir, name);
   participant_ = factory->create_participant(domain, qos);
   if (participant_ == nullptr) {
     throw DdsError("cannot create a DDS participant on domain " + std::to_string(domain) +
-                   " with profile '" + profile + "'");
+                   " with profile '" + profile + "'" +
+                   (security_dir ? " and DDS Security from " + *security_dir +
+                                       " (do its certificates, governance and permissions verify "
+                                       "against its ca.pem? tools/make-certs.sh remakes them)"
+                                 : std::string()));
   }
   publisher_ = participant_->create_publisher(fdds::PUBLISHER_QOS_DEFAULT);
   subscriber_ = participant_->create_subscriber(fdds::SUBSCRIBER_QOS_DEFAULT);

@@ -30,15 +30,19 @@ std::string qos_file_path();
 enum class Traffic { data, status };
 
 // A participant with one publisher and one subscriber. Profile: CLOUDSHAPE_DDS_PROFILE, else
-// "cloudshape_localhost" (all traffic on this host). Deletes everything it created on destruction.
+// "cloudshape_localhost" (all traffic on this host). With a security folder (resolve_security_dir
+// in dds/security.hpp) it authenticates as `name` and encrypts (README "DDS Security").
+// Deletes everything it created on destruction.
 class Participant {
  public:
-  Participant(int domain, const std::string& name);
+  Participant(int domain, const std::string& name,
+              const std::optional<std::string>& security_dir = std::nullopt);
   ~Participant();
   Participant(const Participant&) = delete;
   Participant& operator=(const Participant&) = delete;
 
   int domain() const { return domain_; }
+  bool secured() const { return secured_; }
 
   // Registers the type (once) and creates (or finds) the topic.
   template <class Spec>
@@ -58,6 +62,7 @@ class Participant {
                                            eprosima::fastdds::dds::TypeSupport& type);
 
   int domain_;
+  bool secured_ = false;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;

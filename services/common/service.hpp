@@ -16,6 +16,7 @@
 
 #include "config/pipeline_config.hpp"
 #include "dds/endpoints.hpp"
+#include "dds/security.hpp"
 #include "dds/topics.hpp"
 
 namespace cloudshape::service {
@@ -24,6 +25,7 @@ struct Options {
   std::string name;            // stage name: ingest, planes, keypoints, classifier, solver
   std::string config_path;     // resolved pipeline.yaml, empty for built-in defaults
   std::optional<int> domain;   // --domain
+  std::optional<std::string> security_dir;  // --security (empty: off even if the variable is set)
   std::uint32_t lane = 0;      // this replica's lane
   std::uint32_t lanes = 1;     // replicas of this stage
   int subscribers = 1;         // downstream readers to wait for before reading input
@@ -102,7 +104,8 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
   using In = typename InSpec::Message;
   using Out = typename OutSpec::Message;
   const std::atomic<bool>& stop = install_stop_flag();
-  dds::Participant participant(dds::resolve_domain(opt.domain), "cloudshape-" + opt.name);
+  dds::Participant participant(dds::resolve_domain(opt.domain), "cloudshape-" + opt.name,
+                               dds::resolve_security_dir(opt.security_dir));
   StatusReporter status(participant, opt);
   dds::Writer<OutSpec> writer(participant, out_spec);
 
@@ -115,11 +118,22 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
   }
   dds::Reader<InSpec> reader(participant, in_spec);
   status.set_state("running");
-  spdlog::info("running: {} -> {} on domain {}, lane {}/{}", in_spec.name, out_spec.name,
-               participant.domain(), opt.lane, opt.lanes);
+  spdlog::info("running: {} -> {} on domain {}, lane {}/{}, DDS Security {}", in_spec.name, out_spec.name,
+               participant.domain(), opt.lane, opt.lanes, participant.secured() ? "on" : "off");
 
   In in;
+  bool downstream = true;
   while (!stop) {
+    // Downstream gone (a stage restarting, a link cut past the lease): leave the input in
+    // the upstream queue instead of publishing into the void.
+    if (writer.matched_readers() < opt.subscribers) {
+      if (downstream) spdlog::warn("no subscriber on {}: input paused", out_spec.name);
+      downstream = false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      continue;
+    }
+    if (!downstream) spdlog::info("subscriber back on {}: input resumed", out_spec.name);
+    downstream = true;
     if (!reader.take(in, std::chrono::milliseconds(200))) continue;
     const msg::CloudHeader& h = in.header();
     // Replicas split the work on the cloud id: each cloud is handled by exactly one lane.

@@ -170,10 +170,47 @@ TEST(DdsResultJoiner, SingleAndEmptyCloudsCompleteAtOnce) {
   ResultJoiner joiner;
   EXPECT_TRUE(joiner.add(object_result(0, 1, "box")));
   msg::ShapeResult empty = object_result(0, 0, "box");
+  empty.header().cloud_id(8);
   empty.objects().clear();
   const auto none = joiner.add(empty);
   ASSERT_TRUE(none);
   EXPECT_TRUE(to_recognition_result(*none).objects.empty());
+}
+
+// A cloud sent again after a fault comes back twice, possibly half from each attempt: the
+// joiner completes it once and drops every later sample of it.
+TEST(DdsResultJoiner, DropsDuplicatesOfObjectsAndOfCompletedClouds) {
+  ResultJoiner joiner;
+  EXPECT_FALSE(joiner.add(object_result(0, 2, "box")));
+  EXPECT_FALSE(joiner.add(object_result(0, 2, "box")));
+  ASSERT_TRUE(joiner.add(object_result(1, 2, "sphere")));
+  EXPECT_FALSE(joiner.add(object_result(0, 2, "box")));
+  EXPECT_FALSE(joiner.add(object_result(1, 2, "sphere")));
+  msg::ShapeResult single = object_result(0, 1, "cone");
+  single.header().cloud_id(9);
+  EXPECT_TRUE(joiner.add(single));
+  EXPECT_FALSE(joiner.add(single));
+  EXPECT_EQ(joiner.duplicates(), 4u);
+  EXPECT_EQ(joiner.incomplete(), 0u);
+}
+
+TEST(DdsResultJoiner, MemoryIsBoundedOnAnEndlessStream) {
+  ResultJoiner joiner(4);
+  for (std::uint64_t id = 0; id < 100; ++id) {
+    msg::ShapeResult first_of_two = object_result(0, 2, "box");
+    first_of_two.header().cloud_id(id);
+    EXPECT_FALSE(joiner.add(first_of_two));
+  }
+  EXPECT_LE(joiner.incomplete(), 4u);
+  // Only the last few completions are remembered: an old cloud id completes again.
+  for (std::uint64_t id = 1000; id < 1010; ++id) {
+    msg::ShapeResult single = object_result(0, 1, "box");
+    single.header().cloud_id(id);
+    EXPECT_TRUE(joiner.add(single));
+  }
+  msg::ShapeResult old = object_result(0, 1, "box");
+  old.header().cloud_id(1000);
+  EXPECT_TRUE(joiner.add(old));
 }
 
 }  // namespace

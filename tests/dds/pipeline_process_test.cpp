@@ -15,106 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "../tools/process.hpp"
-#include "background.hpp"
+#include "pipeline_harness.hpp"
 #include "report/result_json.hpp"
 
 namespace cloudshape::testing {
 namespace {
 namespace fs = std::filesystem;
-using namespace std::chrono_literals;
-
-const std::string kBin = CLOUDSHAPE_BIN_DIR;
-const std::vector<std::string> kStages = {"ingest", "planes", "keypoints", "classifier", "solver"};
-
-// Generous everywhere: these run on a loaded 2-core machine next to a parallel build.
-constexpr auto kStartWait = 60s;
-constexpr int kEchoTimeoutS = 180;
-
-// CLOUDSHAPE_TEST_DOMAIN_OFFSET shifts every test's domain, so that two checkouts can run
-// their DDS tests on one machine at the same time without hearing each other.
-int domain_offset() {
-  const char* v = std::getenv("CLOUDSHAPE_TEST_DOMAIN_OFFSET");
-  return v == nullptr ? 0 : std::atoi(v);
-}
-
-std::string make_temp_dir(const std::string& name) {
-  std::string templ = (fs::temp_directory_path() / ("cloudshape-dds-" + name + "-XXXXXX")).string();
-  if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
-  return templ;
-}
-
-// The services, echo and inject of one test on one domain; everything is stopped at the end.
-class Pipeline {
- public:
-  Pipeline(const std::string& name, int domain) : dir_(make_temp_dir(name)), domain_(domain + domain_offset()) {}
-  ~Pipeline() {
-    if (!::testing::Test::HasFailure()) fs::remove_all(dir_);
-  }
-
-  const std::string& dir() const { return dir_; }
-  std::string domain() const { return std::to_string(domain_); }
-
-  void start_service(const std::string& stage, std::vector<std::string> extra = {},
-                     const std::string& tag = "") {
-    std::vector<std::string> argv = {kBin + "/cloudshape-" + stage, "--domain", domain()};
-    argv.insert(argv.end(), extra.begin(), extra.end());
-    const std::string log = log_path(stage + tag);
-    services_.emplace_back(stage + tag, procs_.start(argv, log, log));
-  }
-
-  void start_echo(int count) {
-    echo_ = procs_.start({kBin + "/cloudshape-echo", "--domain", domain(), "--count", std::to_string(count),
-                          "--timeout", std::to_string(kEchoTimeoutS)},
-                         dir_ + "/echo.jsonl", log_path("echo"));
-  }
-
-  ProcessResult inject(const std::vector<std::string>& files) {
-    std::vector<std::string> argv = {kBin + "/cloudshape-inject", "--domain", domain(), "--wait",
-                                     std::to_string(kStartWait.count())};
-    argv.insert(argv.end(), files.begin(), files.end());
-    return run_process(argv);
-  }
-
-  // Another subscriber program (stdout to dir/out_name, stderr to its log).
-  pid_t start_other(const std::vector<std::string>& argv, const std::string& out_name) {
-    return procs_.start(argv, dir_ + "/" + out_name, log_path(fs::path(out_name).stem().string()));
-  }
-  int wait_other(pid_t pid) { return procs_.wait(pid, std::chrono::seconds(kEchoTimeoutS + 30)); }
-
-  // Echo's exit status once it printed its --count results (or timed out).
-  int wait_echo() { return procs_.wait(echo_, std::chrono::seconds(kEchoTimeoutS + 30)); }
-  std::vector<std::string> echo_lines() const { return lines_of(read_text(dir_ + "/echo.jsonl")); }
-
-  // SIGTERM to every service: each must stop cleanly with status 0.
-  void stop_services() {
-    for (const auto& [name, pid] : services_) {
-      EXPECT_EQ(procs_.stop(pid, 30s), 0) << name << " did not stop cleanly; log:\n" << read_text(log_path(name));
-    }
-    services_.clear();
-  }
-
-  std::string log_path(const std::string& name) const { return dir_ + "/" + name + ".log"; }
-
- private:
-  std::string dir_;
-  int domain_;
-  Background procs_;
-  std::vector<std::pair<std::string, pid_t>> services_;
-  pid_t echo_ = -1;
-};
-
-std::vector<std::string> synthetic_clouds(const std::string& dir, int points) {
-  const ProcessResult r = run_process({kBin + "/cloudshape-synth", "suite", "--out", dir, "--points",
-                                       std::to_string(points), "--seed", "11", "--count", "1"});
-  if (r.exit_code != 0) throw std::runtime_error("cloudshape-synth failed: " + r.err);
-  std::vector<std::string> files;
-  for (const auto& e : fs::directory_iterator(dir)) {
-    if (e.path().extension() == ".pcd") files.push_back(e.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
 
 // A box and a sphere far apart in one .xyz file: two objects, two entries in one result.
 std::string two_object_cloud(const std::string& dir) {
@@ -147,61 +53,6 @@ std::vector<std::string> real_clouds() {
     if (fs::exists(real / f)) files.push_back((real / f).string());
   }
   return files;
-}
-
-std::map<std::string, pipeline::RecognitionResult> by_source(const std::vector<std::string>& lines) {
-  std::map<std::string, pipeline::RecognitionResult> results;
-  for (const std::string& line : lines) {
-    if (line.empty()) continue;
-    pipeline::RecognitionResult r = report::result_from_json_line(line);
-    EXPECT_EQ(results.count(r.source), 0u) << "two results for " << r.source;
-    results[r.source] = r;
-  }
-  return results;
-}
-
-bool close(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
-
-// The acceptance criterion: same shape, dimensions equal within 1e-6 relative (and the rest too).
-void expect_same_results(const std::vector<std::string>& expected_lines, const std::vector<std::string>& actual_lines) {
-  const auto expected = by_source(expected_lines);
-  const auto actual = by_source(actual_lines);
-  ASSERT_EQ(actual.size(), expected.size());
-  for (const auto& [source, e] : expected) {
-    SCOPED_TRACE(source);
-    ASSERT_EQ(actual.count(source), 1u) << "no result from echo";
-    const pipeline::RecognitionResult& a = actual.at(source);
-    EXPECT_EQ(a.points_in, e.points_in);
-    EXPECT_EQ(a.points_used, e.points_used);
-    EXPECT_TRUE(close(a.resolution, e.resolution));
-    ASSERT_EQ(a.objects.size(), e.objects.size());
-    for (std::size_t i = 0; i < e.objects.size(); ++i) {
-      const pipeline::ObjectResult& eo = e.objects[i];
-      const pipeline::ObjectResult& ao = a.objects[i];
-      EXPECT_EQ(ao.shape, eo.shape);
-      EXPECT_TRUE(close(ao.confidence, eo.confidence)) << ao.confidence << " vs " << eo.confidence;
-      ASSERT_EQ(ao.dimensions.size(), eo.dimensions.size());
-      for (std::size_t d = 0; d < eo.dimensions.size(); ++d) {
-        EXPECT_EQ(ao.dimensions[d].first, eo.dimensions[d].first);
-        EXPECT_TRUE(close(ao.dimensions[d].second, eo.dimensions[d].second))
-            << eo.dimensions[d].first << ": " << ao.dimensions[d].second << " vs " << eo.dimensions[d].second;
-      }
-      for (int k = 0; k < 3; ++k) EXPECT_TRUE(close(ao.center[k], eo.center[k]));
-      EXPECT_EQ(ao.partial, eo.partial);
-      EXPECT_EQ(ao.keypoints.corner, eo.keypoints.corner);
-      EXPECT_EQ(ao.keypoints.edge, eo.keypoints.edge);
-      EXPECT_EQ(ao.keypoints.border, eo.keypoints.border);
-      EXPECT_EQ(ao.reason, eo.reason);
-    }
-  }
-}
-
-std::vector<std::string> recognize(const std::vector<std::string>& files) {
-  std::vector<std::string> argv = {kBin + "/cloudshape-recognize"};
-  argv.insert(argv.end(), files.begin(), files.end());
-  const ProcessResult r = run_process(argv);
-  EXPECT_EQ(r.exit_code, 0) << r.err;
-  return lines_of(r.out);
 }
 
 int count_matches(const std::string& text, const std::string& pattern) {

@@ -1,6 +1,6 @@
-// cloudshape-echo [--domain N] [--count N] [--timeout S] [--status] [--latency]
-// Prints every shape result as one JSON line, the very object cloudshape-recognize prints
-// (report::result_to_json_line); --status prints the services' status samples instead.
+// cloudshape-echo [--domain N] [--security DIR] [--count N] [--timeout S] [--status] [--latency]
+// Prints every cloud's shape result once as one JSON line, the very object cloudshape-recognize
+// prints (report::result_to_json_line); --status prints the services' status samples instead.
 #include <CLI/CLI.hpp>
 #include <atomic>
 #include <chrono>
@@ -12,6 +12,7 @@
 
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
+#include "dds/security.hpp"
 #include "dds/result_joiner.hpp"
 #include "dds/topics.hpp"
 #include "report/result_json.hpp"
@@ -71,11 +72,14 @@ int echo(cs::dds::Participant& participant, const Spec& spec, cs::dds::Traffic t
 int main(int argc, char** argv) {
   CLI::App app{"Prints the cloudshape shape results (one JSON line each) or the services' status.", kTool};
   int domain = -1;
+  std::string security;
   long count = 0;
   double timeout_s = 0;
   bool status = false;
   bool latency = false;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  app.add_option("--security", security,
+                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
   app.add_option("--count", count, "exit after this many samples (exit 1 if --timeout comes first)");
   app.add_option("--timeout", timeout_s, "exit after this many seconds");
   app.add_flag("--status", status, "print the services' status samples instead of results");
@@ -89,7 +93,9 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_signal);
   try {
     cs::dds::Participant participant(
-        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool);
+        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
+        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
+                                                                  : std::nullopt));
     if (status) {
       return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,
                   [](const cs::msg::ServiceStatus& s) {
@@ -97,9 +103,10 @@ int main(int argc, char** argv) {
                     return true;
                   });
     }
-    // The solver publishes one result per object: print a cloud once all its objects came.
+    // The solver publishes one result per object: print a cloud once all its objects came,
+    // and once only (a cloud sent again after a fault may come back twice).
     cs::dds::ResultJoiner joiner;
-    return echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
+    const int exit_status = echo(participant, cs::dds::topics::result, cs::dds::Traffic::data, count, timeout_s,
                 [&](cs::msg::ShapeResult& r) {
                   const auto cloud = joiner.add(std::move(r));
                   if (!cloud) return false;
@@ -112,6 +119,11 @@ int main(int argc, char** argv) {
                   }
                   return true;
                 });
+    if (joiner.duplicates() > 0) {
+      std::fprintf(stderr, "%s: dropped %llu duplicate result sample(s)\n", kTool,
+                   static_cast<unsigned long long>(joiner.duplicates()));
+    }
+    return exit_status;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s: %s\n", kTool, e.what());
     return 1;

@@ -1,6 +1,8 @@
-// cloudshape-inject [--domain N] [--rate HZ] [--loop] FILE_OR_DIR...
+// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop] [--resend-after S] FILE_OR_DIR...
 // Reads clouds with io::read_cloud and publishes each on the raw-cloud topic, once a subscriber
-// (the ingest service) is there. Reports on stderr. Exit: 0, 2 if a file was bad, 1 if no subscriber.
+// (the ingest service) is there, then waits for each cloud's result and sends again the clouds
+// whose result is overdue (README "No lost clouds"). Reports on stderr.
+// Exit: 0, 2 if a file was bad, 1 if no subscriber or a cloud got no result.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
@@ -12,15 +14,13 @@
 #include <thread>
 #include <vector>
 
-#include "dds/convert.hpp"
-#include "dds/endpoints.hpp"
-#include "dds/topics.hpp"
-#include "io/cloud_reader.hpp"
-#include "io/read_error.hpp"
+#include "dds/security.hpp"
+#include "delivery.hpp"
 
 namespace {
 namespace cs = cloudshape;
 namespace fs = std::filesystem;
+using cs::inject::Clock;
 constexpr const char* kTool = "cloudshape-inject";
 
 std::atomic<bool> g_stop{false};  // the signal flag
@@ -53,23 +53,40 @@ std::vector<std::string> expand(const std::vector<std::string>& args) {
   return files;
 }
 
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Publishes point-cloud files on the cloudshape raw-cloud topic.", kTool};
   int domain = -1;
+  std::string security;
   double rate = 0.0;
   bool loop = false;
   double wait_s = 60.0;
-  int subscribers = 1;
   std::uint64_t first_id = 0;
+  cs::inject::DeliverySettings delivery_settings;
   std::vector<std::string> args;
   app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  app.add_option("--security", security,
+                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
-  app.add_option("--subscribers", subscribers, "subscribers to wait for (e.g. ingest replicas)");
+  app.add_option("--subscribers", delivery_settings.subscribers, "subscribers to wait for (e.g. ingest replicas)");
   app.add_option("--first-id", first_id, "cloud id of the first cloud sent (ids then count up)");
+  app.add_option("--resend-after", delivery_settings.resend_after_s,
+                 "send a cloud again when its result has not come after this many seconds "
+                 "(default 10; 0: send once and do not wait for results)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--result-timeout", delivery_settings.result_timeout_s,
+                 "give up waiting for the outstanding results after this many seconds without one (default 120)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--max-pending", delivery_settings.max_pending, "clouds sent but without result before sending waits (default 256)")
+      ->check(CLI::PositiveNumber);
   app.add_option("files", args, "cloud files or folders of them")->required();
   try {
     app.parse(argc, argv);
@@ -81,31 +98,31 @@ int main(int argc, char** argv) {
 
   const std::vector<std::string> files = expand(args);
   try {
-    cs::dds::Participant participant(cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt),
-                                     kTool);
-    cs::dds::Writer<decltype(cs::dds::topics::raw_cloud)> writer(participant, cs::dds::topics::raw_cloud);
-    if (!writer.wait_for_readers(subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
+    cs::dds::Participant participant(
+        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
+        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
+                                                                  : std::nullopt));
+    cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
+    if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
       say("no subscriber on " + std::string(cs::dds::topics::raw_cloud.name) + " after " +
           std::to_string(wait_s) + " s (is cloudshape-ingest running on this domain?)");
       return 1;
     }
+    // Results are watched only now: the chain came up for a real consumer (cloudshape-echo),
+    // not for this reader, so nothing is published before that consumer listens.
+    cs::inject::Delivery delivery(participant, writer, delivery_settings, g_stop, say);
     int status = 0;
     std::uint64_t id = first_id;
     std::size_t sent = 0;
     const auto period = rate > 0 ? std::chrono::duration<double>(1.0 / rate) : std::chrono::duration<double>(0);
-    auto next = std::chrono::steady_clock::now();
+    auto next = Clock::now();
     do {
       for (const std::string& path : files) {
         if (g_stop) break;
-        cs::io::CloudFile cloud;
+        cs::PointList points;
         try {
-          cloud = cs::io::read_cloud(path);
-          if (cloud.points.empty()) throw std::runtime_error("no usable points");
-        } catch (const cs::io::ReadError& e) {
-          say(path + ": " + (e.problem().empty() ? std::string(e.what()) : e.problem()));
-          status = 2;
-          continue;
+          points = cs::inject::read_points(path);
         } catch (const std::exception& e) {
           say(path + ": " + e.what());
           status = 2;
@@ -113,24 +130,24 @@ int main(int argc, char** argv) {
         }
         if (rate > 0) {
           std::this_thread::sleep_until(next);
-          next += std::chrono::duration_cast<std::chrono::steady_clock::duration>(period);
+          next += std::chrono::duration_cast<Clock::duration>(period);
         }
-        cs::msg::RawCloud m;
-        m.header().cloud_id(id);
-        m.header().source(fs::path(path).filename().string());
-        m.header().object_index(0);
-        m.header().object_count(1);
-        m.header().inject_time_ns(std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                      std::chrono::system_clock::now().time_since_epoch())
-                                      .count());
-        m.xyz(cs::dds::to_xyz(cloud.points));
-        if (!writer.write(m, &g_stop)) break;
-        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(cloud.points.size()) +
-            " points)");
+        const cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
+        if (!delivery.send(cloud, points)) break;
+        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(points.size()) + " points)");
         ++id;
         ++sent;
       }
     } while (loop && !g_stop);
+    // Every cloud ends in a result: wait for the outstanding ones, sending again the overdue.
+    const std::vector<std::uint64_t> missing = delivery.finish();
+    if (delivery.lost_a_file()) status = 2;
+    if (!missing.empty()) {
+      std::string ids;
+      for (const std::uint64_t m : missing) ids += " " + std::to_string(m);
+      say("no result for " + std::to_string(missing.size()) + " cloud(s):" + ids);
+      status = 1;
+    }
     // Let the subscribers acknowledge everything before the participant goes away.
     if (!writer.wait_for_acknowledgments(std::chrono::seconds(120))) say("not every cloud was acknowledged");
     say("sent " + std::to_string(sent) + " cloud(s)");

@@ -11,6 +11,7 @@ CLOUDSHAPE_DEB_PACKAGES=(
   libfastrtps-dev libfastcdr-dev fastddsgen
   cyclonedds-dev cyclonedds-tools
   docker-compose
+  openssl tcpdump
 )
 
 CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"

@@ -1,0 +1,71 @@
+// The clouds cloudshape-inject sent whose complete result it has not seen yet: an overdue
+// cloud is sent again, so none is lost (README "No lost clouds").
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace cloudshape::inject {
+
+using Clock = std::chrono::steady_clock;
+
+struct PendingCloud {
+  std::uint64_t id = 0;
+  std::string path;            // read again to send it again: memory does not hold the points
+  std::string source;          // header.source, with the id the key of its result
+  std::int64_t inject_time_ns = 0;  // of the first attempt: latency counts the recovery
+  Clock::time_point last_sent;
+  int attempts = 0;
+};
+
+// Thread-safe: the sender adds and resends, the result watcher completes.
+class PendingClouds {
+ public:
+  void sent(const PendingCloud& cloud) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    clouds_[cloud.id] = cloud;
+  }
+
+  void complete(std::uint64_t id, const std::string& source) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = clouds_.find(id);
+    if (it != clouds_.end() && it->second.source == source) clouds_.erase(it);
+  }
+
+  // The cloud sent longest ago, if that was at least `after` ago, marked as sent again now
+  // (in one step: a result that completes it meanwhile must not be undone by the resend).
+  std::optional<PendingCloud> resend_overdue(Clock::time_point now, Clock::duration after) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    PendingCloud* oldest = nullptr;
+    for (auto& [id, c] : clouds_) {
+      if (oldest == nullptr || c.last_sent < oldest->last_sent) oldest = &c;
+    }
+    if (oldest == nullptr || now - oldest->last_sent < after) return std::nullopt;
+    oldest->last_sent = now;
+    ++oldest->attempts;
+    return *oldest;
+  }
+
+  std::size_t size() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return clouds_.size();
+  }
+
+  std::vector<std::uint64_t> ids() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::vector<std::uint64_t> all;
+    for (const auto& [id, c] : clouds_) all.push_back(id);
+    return all;
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::uint64_t, PendingCloud> clouds_;
+};
+
+}  // namespace cloudshape::inject
