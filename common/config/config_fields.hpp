@@ -27,6 +27,10 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("support_min_share", c.support_min_share);
   f("support_margin", c.support_margin);
   f("support_max_overlap", c.support_max_overlap);
+  f("support_one_sided", c.support_one_sided);
+  f("support_cell", c.support_cell);
+  f("support_iterations", c.support_iterations);
+  f("support_score_samples", c.support_score_samples);
 }
 
 template <class F>

@@ -42,6 +42,10 @@ struct PreprocessConfig {
   double support_min_share = 0.25;
   double support_margin = 0.2;
   double support_max_overlap = 0.9;
+  double support_one_sided = 0.8;        // share of the rest that must stand on one side of it
+  double support_cell = 3.0;             // occupancy cell of the plane (resolutions) for the overlap
+  std::int64_t support_iterations = 300; // RANSAC hypotheses for the support plane
+  std::int64_t support_score_samples = 1000;  // points that score each hypothesis
 };
 
 struct PlanesConfig {

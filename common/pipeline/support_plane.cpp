@@ -14,10 +14,6 @@ namespace cloudshape::pipeline {
 
 namespace {
 
-constexpr int kIterations = 300;         // hypotheses; the support is the plane most hit
-constexpr std::size_t kScoreSamples = 1000;  // scoring sample: a 25% plane is +-1.4%
-constexpr double kOneSided = 0.8;        // share of the rest that must stand on one side
-constexpr double kCellResolutions = 3.0;  // occupancy cell of the plane, resolutions (no gaps)
 
 // Extents of the given points' projections along u and v: {lo_u, hi_u, lo_v, hi_v}.
 std::array<double, 4> footprint(const PointList& points, const std::vector<std::uint32_t>& idx,
@@ -70,11 +66,11 @@ PointList remove_support_plane(const PointList& points, double resolution,
   const double band = cfg.support_band * resolution;
   std::mt19937_64 rng(59907u);
   std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
-  const std::size_t step = std::max<std::size_t>(1, points.size() / kScoreSamples);
+  const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, static_cast<std::size_t>(cfg.support_score_samples)));
 
   std::optional<geometry::Plane> best;
   std::size_t best_score = 0;
-  for (int it = 0; it < kIterations; ++it) {
+  for (std::int64_t it = 0; it < cfg.support_iterations; ++it) {
     const auto plane = geometry::plane_through(points[pick(rng)], points[pick(rng)], points[pick(rng)]);
     if (!plane) continue;
     std::size_t score = 0;
@@ -98,11 +94,11 @@ PointList remove_support_plane(const PointList& points, double resolution,
   if (static_cast<double>(on.size()) < cfg.support_min_share * static_cast<double>(points.size()) || rest == 0)
     return points;
   const auto& objects = side[side[1].size() >= side[0].size()];
-  if (static_cast<double>(objects.size()) < kOneSided * static_cast<double>(rest)) return points;
+  if (static_cast<double>(objects.size()) < cfg.support_one_sided * static_cast<double>(rest)) return points;
   Eigen::Vector3d u, v;
   geometry::plane_basis(plane.normal, u, v);
   if (!surrounds(footprint(points, on, u, v), footprint(points, objects, u, v), cfg.support_margin) ||
-      shadowed_share(points, on, objects, u, v, kCellResolutions * resolution) > cfg.support_max_overlap)
+      shadowed_share(points, on, objects, u, v, cfg.support_cell * resolution) > cfg.support_max_overlap)
     return points;
   PointList kept;
   kept.reserve(objects.size());
