@@ -5,9 +5,10 @@
 #   tools/test.sh            # every test except those labelled "long"
 #   tools/test.sh --long     # every test
 #   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R)
+#   tools/test.sh --sanitize # ASan + UBSan build in build-sanitize/: the unit-test executables
 #
-# Environment: CLOUDSHAPE_BUILD_DIR (default build/), CLOUDSHAPE_JOBS (default: all cores),
-# CLOUDSHAPE_CMAKE_ARGS (extra configure arguments),
+# Environment: CLOUDSHAPE_BUILD_DIR (default build/, or build-sanitize/ with --sanitize),
+# CLOUDSHAPE_JOBS (default: all cores), CLOUDSHAPE_CMAKE_ARGS (extra configure arguments),
 # CLOUDSHAPE_TEST_TIMEOUT (seconds per test, default 600).
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
@@ -15,13 +16,15 @@ CLOUDSHAPE_LOG_TAG=test.sh
 # shellcheck source-path=SCRIPTDIR source=lib/deps.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-usage() { sed -n '2,11s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+usage() { sed -n '2,12s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 
 long=0
+sanitize=0
 ctest_filter=()
 while (($#)); do
   case "$1" in
     --long) long=1 ;;
+    --sanitize) sanitize=1 ;;
     -R) [[ $# -ge 2 ]] || cs_die "-R needs a regex"; ctest_filter=(-R "$2"); shift ;;
     -h|--help) usage; exit 0 ;;
     *) usage >&2; cs_die "unknown argument: $1" ;;
@@ -29,9 +32,38 @@ while (($#)); do
   shift
 done
 
+# The unit tests the sanitizer run builds and runs (no process-level DDS tests, no benchmarks:
+# they would double the CI's build for little more coverage of our own code).
+sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recognition_tests
+                io_pcd_reader_test io_pcd_errors_test io_ply_reader_test io_xyz_reader_test
+                io_cloud_reader_test io_cloud_writers_test io_mesh_reader_test io_robustness_test
+                io_real_data_test fuzz_regressions_test dds_ingest_sample_test dds_convert_test
+                recognize_cli_test)
+if ((sanitize)); then
+  ((long == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
+  [[ -n "${CLOUDSHAPE_BUILD_DIR_SET:-}" ]] || CLOUDSHAPE_BUILD_DIR="$CLOUDSHAPE_REPO/build-sanitize"
+  CLOUDSHAPE_CMAKE_ARGS="${CLOUDSHAPE_CMAKE_ARGS:-} -DCLOUDSHAPE_SANITIZE=ON"
+  # A finding stops the program (the build sets -fno-sanitize-recover) and fails its test.
+  # Leaks are not checked: Fast DDS keeps singletons alive until exit by design.
+  export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=0:abort_on_error=1}"
+  export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
+fi
+
 start=$SECONDS
 cd "$CLOUDSHAPE_REPO"
 cs_ensure_packages
+if ((sanitize)); then
+  cs_configure_and_build "${sanitize_tests[@]}"
+  failed=()
+  for t in "${sanitize_tests[@]}"; do
+    cs_log "sanitized: $t"
+    "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 >&2 || failed+=("$t")
+  done
+  elapsed=$((SECONDS - start))
+  ((${#failed[@]} == 0)) || cs_die "FAIL under ASan + UBSan after ${elapsed}s: ${failed[*]}"
+  cs_log "PASS: ${#sanitize_tests[@]} unit-test programs clean under ASan + UBSan in ${elapsed}s"
+  exit 0
+fi
 cs_configure_and_build
 
 ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error

@@ -7,6 +7,13 @@
 namespace cloudshape::config {
 
 template <class F>
+void visit_fields(InputConfig& c, F&& f) {
+  f("max_points", c.max_points);
+  f("max_bytes", c.max_bytes);
+  f("max_coordinate", c.max_coordinate);
+}
+
+template <class F>
 void visit_fields(PreprocessConfig& c, F&& f) {
   f("voxel_divisions", c.voxel_divisions);
   f("max_points", c.max_points);
@@ -96,6 +103,7 @@ void visit_fields(SolveConfig& c, F&& f) {
 // Calls f(section_name, section_struct) for every stage section.
 template <class F>
 void visit_sections(PipelineConfig& c, F&& f) {
+  f("input", c.input);
   f("preprocess", c.preprocess);
   f("planes", c.planes);
   f("keypoints", c.keypoints);

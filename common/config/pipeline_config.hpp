@@ -1,4 +1,4 @@
-// Every tunable of the recognition pipeline, one plain struct per stage, and the
+// Every tunable of the recognition pipeline (input limits, then one plain struct per stage), and the
 // loader that fills them from config/pipeline.yaml (unknown keys are rejected).
 #pragma once
 
@@ -10,6 +10,7 @@
 namespace cloudshape::config {
 
 struct PipelineConfig {
+  InputConfig input;
   PreprocessConfig preprocess;
   PlanesConfig planes;
   KeypointsConfig keypoints;

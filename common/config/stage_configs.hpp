@@ -7,6 +7,16 @@
 
 namespace cloudshape::config {
 
+// What a cloud may cost before anything is done with it: the readers (cloudshape-recognize,
+// cloudshape-inject) and ingest refuse bigger input with an error naming the limit.
+struct InputConfig {
+  std::int64_t max_points = 5'000'000;      // points of one cloud, counting non-finite ones
+  std::int64_t max_bytes = 1'000'000'000;   // bytes of one file, or of one raw cloud's coordinates (24 per point)
+  // Larger coordinates are no measurement in any unit, and sums of their squares or centroids
+  // of them overflow to infinity (found by fuzzing): such a cloud is refused.
+  double max_coordinate = 1e30;
+};
+
 struct PreprocessConfig {
   double voxel_divisions = 200.0;       // voxel edge = bounding-box diagonal / this
   std::int64_t max_points = 12000;      // the voxel grows until at most this many remain

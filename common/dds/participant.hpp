@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "dds/checked_type.hpp"
+
 namespace cloudshape::dds {
 
 class DdsError : public std::runtime_error {
@@ -47,8 +49,7 @@ class Participant {
   // Registers the type (once) and creates (or finds) the topic.
   template <class Spec>
   eprosima::fastdds::dds::Topic* topic(const Spec& spec) {
-    using PubSub = typename Spec::PubSubType;
-    eprosima::fastdds::dds::TypeSupport type(new PubSub());
+    eprosima::fastdds::dds::TypeSupport type(new CheckedPubSubType<Spec>());
     return topic_for(spec.name, type);
   }
 

@@ -25,9 +25,11 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   if (!(voxel_size > 0.0) || points.empty()) return points;
   const Bounds b = bounding_box(points);
   const double inv = 1.0 / voxel_size;
-  // 21 bits per axis (one voxel of margin each side for the neighbour test).
+  // 21 bits per axis (one voxel of margin each side for the neighbour test). A denormal voxel
+  // (inv = inf) or coordinates whose differences overflow give no grid (found by fuzz_ingest:
+  // 0 * inf = NaN would be cast to an integer below).
   const Eigen::Vector3d extent = (b.max - b.min) * inv;
-  if (!(extent.maxCoeff() < double((1 << 21) - 3))) return points;
+  if (!std::isfinite(inv) || !extent.allFinite() || !(extent.maxCoeff() < double((1 << 21) - 3))) return points;
   auto key_of = [](std::uint64_t ix, std::uint64_t iy, std::uint64_t iz) {
     return (ix << 42) | (iy << 21) | iz;
   };

@@ -33,7 +33,7 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
   app.add_option("--subscribers", opt.subscribers,
                  "downstream readers to wait for before reading input (e.g. the next stage's replicas)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--max-points", opt.max_points, "largest raw cloud accepted (ingest)");
+  app.add_option("--max-points", opt.max_points, "largest raw cloud accepted (ingest; default input.max_points)");
   app.add_flag("-v,--verbose", verbose, "debug logging");
   try {
     app.parse(argc, argv);

@@ -29,7 +29,7 @@ struct Options {
   std::uint32_t lane = 0;      // this replica's lane
   std::uint32_t lanes = 1;     // replicas of this stage
   int subscribers = 1;         // downstream readers to wait for before reading input
-  std::size_t max_points = 2'000'000;
+  std::optional<std::size_t> max_points;  // --max-points: overrides input.max_points (ingest)
 };
 
 // Parses the common flags; exits the process on --help or a bad command line (status 2).
@@ -93,7 +93,8 @@ Out forward_empty(In& in) {
 // Runs a service until stopped. `stage` turns an input sample into output samples (it may
 // move from its input; ingest makes one per object). It is not called for samples that
 // already carry an error, which go on as `on_error(in, stage_name, text)` makes them, as do
-// exceptions thrown by `stage`, nor for a cloud without objects (`on_empty`).
+// exceptions thrown by `stage`, nor for a cloud without objects (`on_empty`; without one,
+// `stage` gets those too).
 template <class InSpec, class OutSpec>
 int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
         const std::function<std::vector<typename OutSpec::Message>(typename InSpec::Message&)>& stage,
@@ -147,7 +148,7 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
     if (h.error()) {
       out = one(on_error(in, h.error_stage(), h.error_text()));
       failed = true;
-    } else if (h.object_count() == 0) {
+    } else if (h.object_count() == 0 && on_empty) {
       out = one(on_empty(in));
     } else {
       try {

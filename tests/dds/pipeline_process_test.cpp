@@ -127,7 +127,7 @@ TEST(DdsPipeline, AFailingStageStillGivesOneResult) {
     ASSERT_EQ(r.objects.size(), 1u);
     EXPECT_EQ(r.objects[0].shape, "unknown");
     EXPECT_NE(r.objects[0].reason.find("ingest"), std::string::npos) << r.objects[0].reason;
-    EXPECT_NE(r.objects[0].reason.find("--max-points"), std::string::npos) << r.objects[0].reason;
+    EXPECT_NE(r.objects[0].reason.find("more than input.max_points 100"), std::string::npos) << r.objects[0].reason;
   }
   p.stop_services();
 }

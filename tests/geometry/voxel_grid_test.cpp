@@ -28,6 +28,14 @@ TEST(VoxelGrid, NonPositiveSizeKeepsTheCloud) {
   EXPECT_EQ(voxel_grid_downsample(pts, 0.0).size(), pts.size());
 }
 
+TEST(VoxelGrid, DenormalVoxelOrOverflowingExtentKeepsTheCloud) {
+  // Found by fuzzing ingest: 1 / denormal = inf, and 0 * inf = NaN was cast to an integer.
+  const PointList tiny{Point(0, 0, 0), Point(4e-321, 0, 0), Point(0, 4e-321, 0)};
+  EXPECT_EQ(voxel_grid_downsample(tiny, 2e-323), tiny);
+  const PointList huge{Point(-1e308, 0, 0), Point(1e308, 1, 1), Point(0, 0, 0)};
+  EXPECT_EQ(voxel_grid_downsample(huge, 1.0), huge);
+}
+
 TEST(VoxelGrid, IsolatedVoxelsAreDroppedOnlyWhenRare) {
   PointList pts = grid(40, 0.1);  // dense sheet: every voxel has neighbours
   pts.emplace_back(10.0, 10.0, 10.0);  // a stray point far away

@@ -120,6 +120,24 @@ TEST(IoMeshReader, NonFiniteVertex) {
   expect_read_error([&] { read_ply_mesh_buffer(ascii, "m.ply"); }, "m.ply", "vertex 2", "non-finite");
 }
 
+TEST(IoMeshReader, VertexFaceAndByteLimits) {
+  ReadLimits four;
+  four.max_points = 4;  // 5 vertices, 3 triangles
+  expect_read_error([&] { read_ply_mesh_buffer(kAsciiPlyMesh, "m.ply", four); }, "m.ply", "line 3",
+                    "declared 5 vertices, more than the limit of 4");
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nf 1 2 3 4\nf 1 2 5\n";
+  expect_read_error([&] { read_obj_mesh_buffer(obj, "m.obj", four); }, "m.obj", "data",
+                    "5 vertices, more than the limit of 4");
+  ReadLimits five;  // 5 vertices allowed, but 7 triangles (the quad makes two)
+  five.max_points = 5;
+  expect_read_error([&] { read_obj_mesh_buffer(obj + "f 2 3 4\nf 1 3 5\nf 1 4 5\nf 2 4 5\n", "m.obj", five); },
+                    "m.obj", "face 5", "more than the limit of 5 triangles");
+  ReadLimits bytes;
+  bytes.max_bytes = 20;
+  expect_read_error([&] { read_obj_mesh_buffer(obj, "m.obj", bytes); }, "m.obj", "byte 20",
+                    "more than the limit of 20 bytes");
+}
+
 TEST(IoMeshReader, UnknownExtensionAndMissingFile) {
   test::TempDir dir;
   const std::string stl = dir.write("m.stl", "solid\n");

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "io/cloud_writers.hpp"
 #include "process.hpp"
 #include "report/result_json.hpp"
 #include "synth/random_solid.hpp"
@@ -83,6 +84,11 @@ class RecognizeCli : public ::testing::Test {
     write_text(path("empty.xyz"), "");
     write_text(path("garbage.pcd"), "this is not a point cloud\n\x01\x02\x03\n");
     write_text(path("bad.yaml"), "no_such_section:\n  threshold: 1\n");
+    write_text(path("small_points.yaml"), "input:\n  max_points: 5999\n");
+    write_text(path("small_bytes.yaml"), "input:\n  max_bytes: 1000\n");
+    write_degenerate_clouds();
+    write_text(path("far_point.xyz"), "0 0 0\n1 0 0\n0 1 1e200\n");
+    write_truncated_files();
     write_text(path("broken.yaml"), "preprocess: [unclosed\n");
   }
   static void TearDownTestSuite() {
@@ -91,6 +97,39 @@ class RecognizeCli : public ::testing::Test {
     delete dir_;
   }
   static std::string path(const std::string& name) { return (*dir_ / name).string(); }
+
+  // Readable clouds with no solid in them (the reason each must give is in the test).
+  static void write_degenerate_clouds() {
+    write_xyz(path("one_point.xyz"), {Point(1, 2, 3)});
+    write_xyz(path("three_points.xyz"), {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)});
+    write_xyz(path("repeated_point.xyz"), PointList(3000, Point(4, 5, 6)));
+    PointList line, plane;
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 3000; ++i) {
+      line.emplace_back(0.01 * i, 0.02 * i, -0.03 * i);
+      const double a = u(rng), b = u(rng);
+      plane.emplace_back(a, b, 0.5 * a - 0.25 * b + 2.0);
+    }
+    write_xyz(path("collinear.xyz"), line);
+    write_xyz(path("coplanar.xyz"), plane);
+  }
+
+  // Binary files cut short: the header promises more points than the data holds.
+  static void write_truncated_files() {
+    const PointList points = sample(synth::ShapeKind::box, 2000, 5);
+    for (const std::string name : {"truncated.pcd", "truncated.ply"}) {
+      const std::string whole = path("whole_" + name);
+      if (name == "truncated.pcd") {
+        io::write_pcd(whole, points, io::PcdEncoding::binary);
+      } else {
+        io::write_ply(whole, points, true);
+      }
+      std::ifstream in(whole, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+      write_text(path(name), bytes.substr(0, bytes.size() / 2));
+    }
+  }
 
   static ProcessResult run(std::vector<std::string> args) {
     args.insert(args.begin(), kBin);
@@ -162,6 +201,65 @@ TEST_F(RecognizeCli, OnlyBadFilesGiveNoStdout) {
   const auto lines = failures_for(r, path("all_nan.pcd"));
   ASSERT_EQ(lines.size(), 1u) << r.err;
   EXPECT_NE(lines[0].find("no usable points"), std::string::npos) << lines[0];
+}
+
+TEST_F(RecognizeCli, TruncatedFilesAreReportedOnOneLineEach) {
+  const ProcessResult r = run({path("truncated.pcd"), path("box.xyz"), path("truncated.ply")});
+  EXPECT_EQ(r.exit_code, 2);
+  ASSERT_EQ(results(r).size(), 1u) << r.out;
+  for (const std::string file : {"truncated.pcd", "truncated.ply"}) {
+    const auto lines = failures_for(r, path(file));
+    ASSERT_EQ(lines.size(), 1u) << r.err;
+    EXPECT_NE(lines[0].find("truncated"), std::string::npos) << lines[0];
+  }
+}
+
+TEST_F(RecognizeCli, InputLimitsFromTheConfigurationRefuseBiggerFiles) {
+  // box.xyz holds 6000 points; the limit is 5999. The file under the limit is still processed.
+  const ProcessResult points = run({"--config", path("small_points.yaml"), path("box.xyz"), path("three_points.xyz")});
+  EXPECT_EQ(points.exit_code, 2);
+  EXPECT_EQ(results(points).size(), 1u) << points.out;
+  auto lines = failures_for(points, path("box.xyz"));
+  ASSERT_EQ(lines.size(), 1u) << points.err;
+  EXPECT_NE(lines[0].find("more than the limit of 5999 points"), std::string::npos) << lines[0];
+
+  const ProcessResult bytes = run({"--config", path("small_bytes.yaml"), path("box.xyz"), path("one_point.xyz")});
+  EXPECT_EQ(bytes.exit_code, 2);
+  EXPECT_EQ(results(bytes).size(), 1u) << bytes.out;
+  lines = failures_for(bytes, path("box.xyz"));
+  ASSERT_EQ(lines.size(), 1u) << bytes.err;
+  EXPECT_NE(lines[0].find("more than the limit of 1000 bytes"), std::string::npos) << lines[0];
+}
+
+TEST_F(RecognizeCli, CoordinatesBeyondTheLimitAreRefused) {
+  const ProcessResult r = run({path("far_point.xyz"), path("one_point.xyz")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(results(r).size(), 1u) << r.out;
+  const auto lines = failures_for(r, path("far_point.xyz"));
+  ASSERT_EQ(lines.size(), 1u) << r.err;
+  EXPECT_NE(lines[0].find("beyond input.max_coordinate 1e+30"), std::string::npos) << lines[0];
+}
+
+TEST_F(RecognizeCli, CloudsWithNoSolidAreUnknownWithTheirReason) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"one_point.xyz", "too few points"},   {"three_points.xyz", "too few points"},
+      {"repeated_point.xyz", "all points coincide"}, {"collinear.xyz", "collinear"},
+      {"coplanar.xyz", "coplanar"}};
+  std::vector<std::string> files;
+  for (const auto& [file, reason] : cases) files.push_back(path(file));
+  const ProcessResult r = run(files);
+  EXPECT_EQ(r.exit_code, 0) << r.err;  // readable files: unknown is still a success
+  const auto res = results(r);
+  ASSERT_EQ(res.size(), cases.size()) << r.out;
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(cases[i].first);
+    EXPECT_EQ(res[i]["source"], cases[i].first);
+    ASSERT_EQ(res[i]["objects"].size(), 1u) << res[i].dump();
+    EXPECT_EQ(res[i]["objects"][0]["shape"], "unknown");
+    EXPECT_TRUE(res[i]["objects"][0]["dimensions"].empty());
+    EXPECT_NE(res[i]["objects"][0]["reason"].get<std::string>().find(cases[i].second), std::string::npos)
+        << res[i].dump();
+  }
 }
 
 TEST_F(RecognizeCli, BadConfigurationStopsBeforeAnyFile) {

@@ -13,9 +13,14 @@ CLOUDSHAPE_DEB_PACKAGES=(
   docker-compose
   openssl tcpdump
 )
+# Only tools/fuzz.sh needs these: clang and its libFuzzer runtime (libclang_rt.fuzzer).
+# shellcheck disable=SC2034  # read by tools/fuzz.sh
+CLOUDSHAPE_FUZZ_DEB_PACKAGES=(clang-14 libclang-rt-14-dev)
 
 CLOUDSHAPE_REPO="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 # build/ per INTERFACE.md; CLOUDSHAPE_BUILD_DIR overrides it (e.g. for a second, private tree).
+# shellcheck disable=SC2034  # read by tools/test.sh (--sanitize picks its own tree unless set)
+CLOUDSHAPE_BUILD_DIR_SET="${CLOUDSHAPE_BUILD_DIR:+yes}"
 CLOUDSHAPE_BUILD_DIR="${CLOUDSHAPE_BUILD_DIR:-$CLOUDSHAPE_REPO/build}"
 CLOUDSHAPE_JOBS="${CLOUDSHAPE_JOBS:-$(nproc 2>/dev/null || echo 2)}"
 CLOUDSHAPE_LOG_TAG="${CLOUDSHAPE_LOG_TAG:-cloudshape}"
@@ -23,22 +28,27 @@ CLOUDSHAPE_LOG_TAG="${CLOUDSHAPE_LOG_TAG:-cloudshape}"
 cs_log() { printf '[%s] %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; }
 cs_die() { printf '[%s] ERROR: %s\n' "$CLOUDSHAPE_LOG_TAG" "$*" >&2; exit 1; }
 
-# Prints the packages of CLOUDSHAPE_DEB_PACKAGES that are not installed, one per line.
+# Prints the packages among the arguments (default: CLOUDSHAPE_DEB_PACKAGES) that are not
+# installed, one per line.
 cs_missing_packages() {
   local pkg status
-  for pkg in "${CLOUDSHAPE_DEB_PACKAGES[@]}"; do
+  (($#)) || set -- "${CLOUDSHAPE_DEB_PACKAGES[@]}"
+  for pkg in "$@"; do
     status="$(dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null || true)"
     [[ "$status" == "install ok installed" ]] || printf '%s\n' "$pkg"
   done
 }
 
 # Installs the missing packages non-interactively; touches apt only when something is missing.
+# Arguments: extra packages wanted besides CLOUDSHAPE_DEB_PACKAGES (e.g. the fuzzing ones).
+# shellcheck disable=SC2120  # the usual callers want only the default list
 cs_ensure_packages() {
   command -v dpkg-query >/dev/null 2>&1 || cs_die "dpkg-query not found: this script expects Debian 12"
+  local -a wanted=("${CLOUDSHAPE_DEB_PACKAGES[@]}" "$@")
   local missing
-  mapfile -t missing < <(cs_missing_packages)
+  mapfile -t missing < <(cs_missing_packages "${wanted[@]}")
   if ((${#missing[@]} == 0)); then
-    cs_log "dependencies: all ${#CLOUDSHAPE_DEB_PACKAGES[@]} Debian packages present"
+    cs_log "dependencies: all ${#wanted[@]} Debian packages present"
     return 0
   fi
   cs_log "dependencies: installing ${missing[*]}"
@@ -54,13 +64,17 @@ cs_ensure_packages() {
   "${sudo_cmd[@]}" apt-get install -y -q --no-install-recommends \
     -o Dpkg::Options::=--force-confdef -o Dpkg::Options::=--force-confold "${missing[@]}" \
     || cs_die "apt-get install failed"
-  mapfile -t missing < <(cs_missing_packages)
+  mapfile -t missing < <(cs_missing_packages "${wanted[@]}")
   ((${#missing[@]} == 0)) || cs_die "still missing after install: ${missing[*]}"
 }
 
-# Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR. CLOUDSHAPE_CMAKE_ARGS (space-separated)
-# is passed to the configure step, e.g. "-DCLOUDSHAPE_SANITIZE=ON".
+# Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR: every target, or only the targets
+# given as arguments. CLOUDSHAPE_CMAKE_ARGS (space-separated) is passed to the configure step,
+# e.g. "-DCLOUDSHAPE_SANITIZE=ON".
+# shellcheck disable=SC2120  # most callers build every target
 cs_configure_and_build() {
+  local -a targets=()
+  (($#)) && targets=(--target "$@")
   local -a gen=() extra=()
   read -r -a extra <<<"${CLOUDSHAPE_CMAKE_ARGS:-}"
   local cache="$CLOUDSHAPE_BUILD_DIR/CMakeCache.txt"
@@ -82,5 +96,5 @@ cs_configure_and_build() {
   fi
   cs_log "build: $CLOUDSHAPE_JOBS parallel jobs"
   # Build progress goes to stderr so that stdout carries only results (demo.sh: JSON lines).
-  cmake --build "$CLOUDSHAPE_BUILD_DIR" --parallel "$CLOUDSHAPE_JOBS" >&2 || cs_die "build failed"
+  cmake --build "$CLOUDSHAPE_BUILD_DIR" --parallel "$CLOUDSHAPE_JOBS" "${targets[@]}" >&2 || cs_die "build failed"
 }

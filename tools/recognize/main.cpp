@@ -14,6 +14,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -97,11 +98,14 @@ int main(int argc, char** argv) {
     }
   }
 
+  // The configuration's input limits: a bigger file is refused before it is read in full.
+  const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
+                                  static_cast<std::size_t>(cfg.input.max_bytes)};
   int status = 0;
   for (const std::string& path : files) {
     cs::io::CloudFile cloud;
     try {
-      cloud = cs::io::read_cloud(path);
+      cloud = cs::io::read_cloud(path, limits);
     } catch (const cs::io::ReadError& e) {
       report_failure(read_error_text(path, e));
       status = kExitBadInput;
@@ -117,6 +121,15 @@ int main(int argc, char** argv) {
                           ? " (" + std::to_string(cloud.non_finite_dropped) +
                                 " points read, all with NaN or infinite coordinates)"
                           : " (the file holds no points)"));
+      status = kExitBadInput;
+      continue;
+    }
+    if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
+        far < cloud.points.size()) {
+      std::ostringstream text;
+      text << path << ": a point at (" << cloud.points[far].transpose()
+           << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
+      report_failure(text.str());
       status = kExitBadInput;
       continue;
     }

@@ -1,0 +1,86 @@
+#include "dds/ingest_sample.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+
+#include "dds/convert.hpp"
+#include "pipeline/preprocess.hpp"
+#include "pipeline/split_objects.hpp"
+
+namespace cloudshape::dds {
+
+RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputConfig& limits) {
+  const std::vector<double>& xyz = cloud.xyz();
+  if (xyz.size() % 3 != 0) {
+    throw RawCloudError("xyz holds " + std::to_string(xyz.size()) + " values, not whole x y z triples");
+  }
+  const std::size_t count = xyz.size() / 3;
+  if (count == 0) throw RawCloudError("no points (xyz is empty)");
+  const std::size_t bytes = xyz.size() * sizeof(double);
+  if (bytes > static_cast<std::size_t>(limits.max_bytes)) {
+    throw RawCloudError(std::to_string(bytes) + " bytes of coordinates, more than input.max_bytes " +
+                        std::to_string(limits.max_bytes));
+  }
+  if (count > static_cast<std::size_t>(limits.max_points)) {
+    throw RawCloudError(std::to_string(count) + " points, more than input.max_points " +
+                        std::to_string(limits.max_points));
+  }
+  RawCloudPoints out;
+  out.points.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const Point p(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    // Another DDS program may send NaN: such points are dropped, as the file readers do.
+    if (p.allFinite()) {
+      out.points.push_back(p);
+    } else {
+      ++out.non_finite_dropped;
+    }
+  }
+  if (out.points.empty()) {
+    throw RawCloudError("no usable points (all " + std::to_string(count) +
+                        " points have NaN or infinite coordinates)");
+  }
+  const std::size_t far = first_point_beyond(out.points, limits.max_coordinate);
+  if (far < out.points.size()) {
+    std::ostringstream text;
+    text << "a point at (" << out.points[far].transpose() << "), beyond input.max_coordinate "
+         << limits.max_coordinate;
+    throw RawCloudError(text.str());
+  }
+  return out;
+}
+
+std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
+  const RawCloudPoints raw = raw_cloud_points(in, cfg.input);
+  const auto start = std::chrono::steady_clock::now();
+  const pipeline::PreprocessedCloud pre = pipeline::preprocess_cloud(raw.points, cfg.preprocess);
+  const std::vector<PointList> objects = pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  std::vector<msg::FilteredCloud> out;
+  // No object at all still makes one message (object_count 0): one result per cloud.
+  const std::size_t count = objects.size();
+  for (std::size_t i = 0; i < std::max<std::size_t>(count, 1); ++i) {
+    msg::FilteredCloud o;
+    o.header(in.header());
+    o.header().object_index(static_cast<std::uint32_t>(i));
+    o.header().object_count(static_cast<std::uint32_t>(count));
+    o.header().timings().preprocess_ms(ms);
+    o.cloud(to_msg(count == 0 ? PointList{} : objects[i], pre, raw.points.size()));
+    out.push_back(std::move(o));
+  }
+  return out;
+}
+
+msg::FilteredCloud refused_raw_cloud(const msg::RawCloud& in, const std::string& stage, const std::string& text) {
+  msg::FilteredCloud out;
+  out.header(in.header());
+  out.header().object_index(0);
+  out.header().object_count(1);
+  out.header().error(true);
+  out.header().error_stage(stage);
+  out.header().error_text(text);
+  return out;
+}
+
+}  // namespace cloudshape::dds

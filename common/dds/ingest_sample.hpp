@@ -1,0 +1,39 @@
+// What cloudshape-ingest does with one received raw cloud, without DDS: check the sample (x y z
+// triples, limits, finite points), then preprocess_cloud and split_objects as recognize_cloud does.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cloudshape.h"
+#include "config/pipeline_config.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::dds {
+
+// A raw cloud that cannot be processed; what() says why (the header names the cloud).
+class RawCloudError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct RawCloudPoints {
+  PointList points;  // the finite points, in sample order
+  std::size_t non_finite_dropped = 0;
+};
+
+// Throws RawCloudError when xyz is not whole x y z triples, holds no point, more points than
+// limits.max_points or more coordinate bytes than limits.max_bytes, no finite point, or a
+// point beyond limits.max_coordinate.
+RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputConfig& limits);
+
+// One filtered cloud per object of `in`, object_index/object_count set (one with object_count 0
+// when preprocessing finds no object). Throws RawCloudError as raw_cloud_points does.
+std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg);
+
+// The one message a refused raw cloud becomes: its header marked failed by `stage` with `text`,
+// as the cloud's single object (a raw cloud's own object fields mean nothing).
+msg::FilteredCloud refused_raw_cloud(const msg::RawCloud& in, const std::string& stage, const std::string& text);
+
+}  // namespace cloudshape::dds

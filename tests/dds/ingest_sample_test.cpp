@@ -1,0 +1,173 @@
+// What ingest does with a received raw cloud (dds::ingest_raw_cloud): bad samples are refused with
+// a reason naming the problem, NaN points are dropped as the file readers drop them, and the rest
+// is exactly preprocess_cloud + split_objects.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <fastcdr/exceptions/BadParamException.h>
+#include <fastdds/rtps/common/SerializedPayload.h>
+
+#include "dds/checked_type.hpp"
+#include "dds/convert.hpp"
+#include "dds/ingest_sample.hpp"
+#include "dds/topics.hpp"
+#include "pipeline/split_objects.hpp"
+#include "synth/random_solid.hpp"
+#include "synth/sample_solid.hpp"
+
+namespace cloudshape::dds {
+namespace {
+using ::testing::HasSubstr;
+
+PointList box_points(std::size_t n) {
+  std::mt19937_64 rng(7);
+  return synth::sample_solid_surface(synth::random_solid(synth::ShapeKind::box, rng, 30.0), n, rng);
+}
+
+msg::RawCloud raw(std::vector<double> xyz, std::uint32_t object_count = 1) {
+  msg::RawCloud m;
+  m.header().cloud_id(17);
+  m.header().source("scan.pcd");
+  m.header().object_count(object_count);
+  m.xyz(std::move(xyz));
+  return m;
+}
+
+// The RawCloudError text for `m`, or "" when it was accepted.
+std::string refusal(const msg::RawCloud& m, const config::PipelineConfig& cfg = {}) {
+  try {
+    ingest_raw_cloud(m, cfg);
+  } catch (const RawCloudError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) {
+  const PointList points = box_points(3000);
+  std::vector<double> xyz = to_xyz(points);
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  xyz[0] = nan;       // point 0
+  xyz[3 * 5 + 1] = inf;  // point 5
+  xyz[3 * 9 + 2] = -inf; // point 9
+  const auto out = ingest_raw_cloud(raw(xyz), config::PipelineConfig{});
+
+  PointList finite = points;
+  for (std::size_t i : {9, 5, 0}) finite.erase(finite.begin() + static_cast<long>(i));
+  const RawCloudPoints kept = raw_cloud_points(raw(xyz), config::InputConfig{});
+  EXPECT_EQ(kept.non_finite_dropped, 3u);
+  EXPECT_EQ(kept.points, finite);
+
+  const config::PipelineConfig cfg;
+  const pipeline::PreprocessedCloud pre = pipeline::preprocess_cloud(finite, cfg.preprocess);
+  const auto objects = pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+  ASSERT_EQ(out.size(), objects.size());
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_FALSE(out[0].header().error());
+  EXPECT_EQ(out[0].header().object_count(), 1u);
+  EXPECT_EQ(out[0].cloud().points_in(), finite.size());
+  EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0]);
+  EXPECT_EQ(out[0].cloud().resolution(), pre.resolution);
+}
+
+TEST(IngestSample, AllNonFiniteIsRefused) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THAT(refusal(raw(std::vector<double>(30, nan))), HasSubstr("all 10 points have NaN or infinite"));
+  std::vector<double> mixed(30, std::numeric_limits<double>::infinity());
+  for (std::size_t i = 0; i < mixed.size(); i += 3) mixed[i] = 1.0;  // x finite, y and z not
+  EXPECT_THAT(refusal(raw(mixed)), HasSubstr("no usable points"));
+}
+
+TEST(IngestSample, LengthNotWholeTriplesIsRefused) {
+  EXPECT_THAT(refusal(raw({1, 2, 3, 4, 5, 6, 7, 8, 9, 10})), HasSubstr("10 values, not whole x y z triples"));
+  EXPECT_THAT(refusal(raw({1, 2})), HasSubstr("not whole x y z triples"));
+}
+
+TEST(IngestSample, ZeroPointsIsRefused) { EXPECT_THAT(refusal(raw({})), HasSubstr("no points")); }
+
+TEST(IngestSample, MorePointsThanTheLimitIsRefused) {
+  config::PipelineConfig cfg;
+  cfg.input.max_points = 999;
+  const std::string text = refusal(raw(to_xyz(box_points(1000))), cfg);
+  EXPECT_THAT(text, HasSubstr("1000 points, more than input.max_points 999"));
+  cfg.input.max_points = 1000;
+  EXPECT_EQ(refusal(raw(to_xyz(box_points(1000))), cfg), "");  // the limit itself is allowed
+}
+
+TEST(IngestSample, MoreBytesThanTheLimitIsRefused) {
+  config::PipelineConfig cfg;
+  cfg.input.max_bytes = 24 * 1000 - 1;
+  EXPECT_THAT(refusal(raw(to_xyz(box_points(1000))), cfg),
+              HasSubstr("24000 bytes of coordinates, more than input.max_bytes 23999"));
+}
+
+TEST(IngestSample, ACoordinateBeyondTheLimitIsRefused) {
+  // Found by fuzz_ingest: centroids of coordinates near 1e308 overflow to infinity.
+  std::vector<double> xyz = to_xyz(box_points(1000));
+  xyz[3 * 500 + 1] = -2e30;
+  EXPECT_THAT(refusal(raw(xyz)), HasSubstr("beyond input.max_coordinate 1e+30"));
+  config::PipelineConfig cfg;
+  cfg.input.max_coordinate = 3e30;
+  EXPECT_EQ(refusal(raw(xyz), cfg), "");
+}
+
+TEST(IngestSample, ARawCloudsOwnObjectCountIsIgnored) {
+  // A sensor program that knows nothing of objects leaves object_count at 0.
+  const auto out = ingest_raw_cloud(raw(to_xyz(box_points(3000)), 0), config::PipelineConfig{});
+  ASSERT_EQ(out.size(), 1u);
+  EXPECT_EQ(out[0].header().object_count(), 1u);
+  EXPECT_EQ(out[0].header().source(), "scan.pcd");
+  EXPECT_EQ(out[0].header().cloud_id(), 17u);
+}
+
+TEST(IngestSample, DegenerateCloudsAreNotRefused) {
+  // No solid in them, but readable: they go on and end as "unknown" with a reason downstream.
+  for (const std::vector<double>& xyz :
+       {std::vector<double>{1, 2, 3}, std::vector<double>{0, 0, 0, 1, 0, 0, 0, 1, 0}}) {
+    EXPECT_EQ(refusal(raw(xyz)), "");
+  }
+  std::vector<double> repeated;
+  for (int i = 0; i < 500; ++i) repeated.insert(repeated.end(), {4.0, 5.0, 6.0});
+  EXPECT_EQ(refusal(raw(repeated)), "");
+}
+
+TEST(IngestSample, ARefusedCloudBecomesOneFailedObject) {
+  const msg::FilteredCloud f = refused_raw_cloud(raw({1, 2}, 5), "ingest", "xyz holds 2 values");
+  EXPECT_TRUE(f.header().error());
+  EXPECT_EQ(f.header().error_stage(), "ingest");
+  EXPECT_EQ(f.header().error_text(), "xyz holds 2 values");
+  EXPECT_EQ(f.header().object_index(), 0u);
+  EXPECT_EQ(f.header().object_count(), 1u);  // so the echo does not wait for 5 objects
+  EXPECT_EQ(f.header().source(), "scan.pcd");
+}
+
+TEST(IngestSample, AnUndecodableSampleBecomesOneFailedCloudInsteadOfAnException) {
+  // Found by fuzz_ingest: a CDR boolean byte that is neither 0 nor 1 makes Fast CDR throw out of
+  // the generated type's deserialize, i.e. out of DataReader::take in the service.
+  msg::RawCloud sent = raw({1, 2, 3});
+  sent.header().source("");
+  msg::RawCloudPubSubType bare;
+  eprosima::fastrtps::rtps::SerializedPayload_t payload(bare.m_typeSize + 64);
+  ASSERT_TRUE(bare.serialize(&sent, &payload));
+  // 4 encapsulation + cloud_id 8 + empty source 5 (+3 padding) + 2 x 4 object fields +
+  // inject_time 8 + 5 timings x 8: the error flag is byte 76.
+  ASSERT_EQ(payload.data[76], 0);
+  payload.data[76] = 2;
+
+  msg::RawCloud received;
+  EXPECT_THROW(bare.deserialize(&payload, &received), eprosima::fastcdr::exception::BadParamException);
+  CheckedPubSubType<decltype(topics::raw_cloud)> checked;
+  received.xyz({9, 9, 9});  // left over from an earlier sample: must not survive
+  EXPECT_FALSE(checked.deserialize(&payload, &received));
+  EXPECT_TRUE(received.header().error());
+  EXPECT_EQ(received.header().object_count(), 1u);
+  EXPECT_THAT(received.header().error_text(), HasSubstr("does not deserialize"));
+  EXPECT_TRUE(received.xyz().empty());
+}
+
+}  // namespace
+}  // namespace cloudshape::dds

@@ -1,0 +1,19 @@
+// One input of each fuzz target through the code under test, shared by the libFuzzer targets
+// and by the regression test that replays every stored input in the default build.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace cloudshape::fuzz {
+
+// Each returns "" when the input was read or refused the documented way (io::ReadError for
+// files, dds::RawCloudError for a raw-cloud sample), else the invariant the result broke.
+// Any other exception escapes: for the fuzzer that is a finding like a crash.
+std::string check_pcd_input(std::string_view bytes);
+std::string check_ply_input(std::string_view bytes);  // as a point cloud and as a mesh
+std::string check_xyz_input(std::string_view bytes);
+// `bytes` is a CDR-encoded cloudshape::msg::RawCloud as it arrives on the raw-cloud topic.
+std::string check_raw_cloud_sample(std::string_view bytes);
+
+}  // namespace cloudshape::fuzz
