@@ -27,6 +27,17 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("split_objects", c.split_objects);
   f("object_gap", c.object_gap);
   f("min_object_fraction", c.min_object_fraction);
+  f("fragment_max_width", c.fragment_max_width);
+  f("fragment_max_share", c.fragment_max_share);
+  f("remove_support_plane", c.remove_support_plane);
+  f("support_band", c.support_band);
+  f("support_min_share", c.support_min_share);
+  f("support_margin", c.support_margin);
+  f("support_max_overlap", c.support_max_overlap);
+  f("support_one_sided", c.support_one_sided);
+  f("support_cell", c.support_cell);
+  f("support_iterations", c.support_iterations);
+  f("support_score_samples", c.support_score_samples);
 }
 
 template <class F>
@@ -80,6 +91,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("apex_conditioning", c.apex_conditioning);
   f("cap_band", c.cap_band);
   f("face_slab", c.face_slab);
+  f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
   f("max_size_ratio", c.max_size_ratio);
   f("sector_min_share", c.sector_min_share);

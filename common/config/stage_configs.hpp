@@ -38,6 +38,24 @@ struct PreprocessConfig {
   bool split_objects = true;
   double object_gap = 2.0;
   double min_object_fraction = 0.02;
+  // A component that is a narrow strip (spread across its length below fragment_max_width
+  // resolutions) and smaller than fragment_max_share of the largest one is a fragment (edge
+  // shadow, mixed pixels, a sliver of back face), not an object.
+  double fragment_max_width = 2.0;
+  double fragment_max_share = 0.2;
+  // Real scenes: a dominant plane holding support_min_share of the points, within
+  // support_band resolutions, reaching beyond the rest (standing on one side of it) on three
+  // of four sides by support_margin of the rest's extent, and with at most support_max_overlap of
+  // the rest over where it was seen (objects hide the table they stand on), is a table or floor: removed first.
+  bool remove_support_plane = true;
+  double support_band = 2.0;
+  double support_min_share = 0.25;
+  double support_margin = 0.2;
+  double support_max_overlap = 0.9;
+  double support_one_sided = 0.8;        // share of the rest that must stand on one side of it
+  double support_cell = 3.0;             // occupancy cell of the plane (resolutions) for the overlap
+  std::int64_t support_iterations = 300; // RANSAC hypotheses for the support plane
+  std::int64_t support_score_samples = 1000;  // points that score each hypothesis
 };
 
 struct PlanesConfig {
@@ -87,6 +105,7 @@ struct SolveConfig {
   double apex_conditioning = 0.01;       // tangent planes meeting less decisively than this (eigenvalue ratio) have no apex
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
+  double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial

@@ -85,7 +85,8 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
       else face_lo = std::isnan(face_lo) ? pos : std::min(face_lo, pos);
     }
     const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
-    std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi);
+    std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi,
+                                                          in.cfg.open_end_quantile);
   }
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });

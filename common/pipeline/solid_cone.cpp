@@ -87,12 +87,16 @@ std::optional<FittedSolid> fit_cone_without_base(const SolveInput& in) {
   return make_cone(apex + height * down, -down, radius, height);
 }
 
-}  // namespace
+// Share of (at most ~2000 of) the points within the inlier distance of the cone's surface.
+double explained_share(const SolveInput& in, const FittedSolid& cone) {
+  const std::size_t step = std::max<std::size_t>(1, in.cloud.size() / 2000);
+  std::size_t n = 0, near = 0;
+  for (std::size_t i = 0; i < in.cloud.size(); i += step, ++n)
+    near += std::abs(cone.signed_distance(in.cloud[i])) <= in.cfg.inlier_distance * in.resolution;
+  return n > 0 ? static_cast<double>(near) / static_cast<double>(n) : 0.0;
+}
 
-std::optional<FittedSolid> fit_cone(const SolveInput& in) {
-  const auto faces = detail::faces_by_size(in.planes);
-  if (faces.empty()) return fit_cone_without_base(in);
-  const DetectedPlane& base = *faces[0];
+std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const DetectedPlane& base) {
   // The base's normal points away from the cloud, the apex lies the other way.
   const Eigen::Vector3d axis = -base.plane.normal;
 
@@ -160,6 +164,29 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   const double height = radius / slope;
 
   return make_cone(centre, axis, radius, height);
+}
+
+}  // namespace
+
+// The largest flat face is taken for the base, but a single view may show no base at all,
+// and then that "face" is a flat-looking strip of the side. A cone on it that explains too
+// few points to be reported is not the answer: the base-free fit is tried as well, and the
+// one explaining more points wins (only then: the base-free fit needs the cloud's normals).
+std::optional<FittedSolid> fit_cone(const SolveInput& in) {
+  const auto faces = detail::faces_by_size(in.planes);
+  std::optional<FittedSolid> on_base;
+  if (!faces.empty()) on_base = fit_cone_on_base(in, *faces[0]);
+  const double on_base_share = on_base ? explained_share(in, *on_base) : 0.0;
+  // Where the key-points say polyhedron (a box, tetrahedron or prism corner count), the cone
+  // is only a rival hypothesis: the normals the base-free fit needs are not worth computing.
+  const auto& classes = in.classification.candidates;
+  const bool polyhedron = !classes.empty() && (classes.front() == Shape::box ||
+                                               classes.front() == Shape::tetrahedron ||
+                                               classes.front() == Shape::pentagonal_prism);
+  if (polyhedron || (on_base && on_base_share >= in.cfg.min_inlier_fraction)) return on_base;
+  std::optional<FittedSolid> free = fit_cone_without_base(in);
+  if (!on_base || !free) return on_base ? on_base : free;
+  return explained_share(in, *free) > on_base_share ? free : on_base;
 }
 
 }  // namespace cloudshape::pipeline

@@ -82,7 +82,8 @@ Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis) {
 }
 
 std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
-                                             double slab, double face_lo, double face_hi) {
+                                             double slab, double face_lo, double face_hi,
+                                             double open_quantile) {
   std::vector<double> t;
   t.reserve(cloud.size());
   for (const Point& p : cloud) t.push_back(p.dot(axis));
@@ -95,12 +96,15 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
     if (x <= lo_edge) low.push_back(x);
     if (x >= hi_edge) high.push_back(x);
   }
-  auto median = [](std::vector<double>& v, double fallback) {
+  // q: the share of the slab's points below the estimate (0.5: the median).
+  auto quantile = [](std::vector<double>& v, double q, double fallback) {
     if (v.empty()) return fallback;
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
+    const auto k = static_cast<std::size_t>(std::clamp(q, 0.0, 1.0) * static_cast<double>(v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + k, v.end());
+    return v[k];
   };
-  return {median(low, *lo_it), median(high, *hi_it)};
+  return {quantile(low, std::isnan(face_lo) ? 1.0 - open_quantile : 0.5, *lo_it),
+          quantile(high, std::isnan(face_hi) ? open_quantile : 0.5, *hi_it)};
 }
 
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,

@@ -90,9 +90,12 @@ Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
 // slab `slab` thick at that end. Exact on a flat face, unbiased by noise, and the outer skin
 // of a bulging one (as SOURCES.md measures "face to face"). A side with a detected face
 // (its position given, else NaN) anchors its slab there rather than at the farthest point,
-// so a few stray points beyond the face cannot move it.
+// so a few stray points beyond the face cannot move it. An end without a face (a single view:
+// the visible faces just stop there) has its points spread evenly over the slab, where the
+// median would fall half a slab short: it takes the open_quantile of the slab instead.
 std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen::Vector3d& axis,
-                                             double slab, double face_lo, double face_hi);
+                                             double slab, double face_lo, double face_hi,
+                                             double open_quantile);
 
 // Points that lie on none of the given faces, nor within `band` of their planes: noisy
 // points of a face that fell outside its fine RANSAC band are still the face's.

@@ -3,16 +3,38 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Eigenvalues>
+
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/detail/union_find.hpp"
 #include "geometry/voxel_grid.hpp"
+#include "pipeline/support_plane.hpp"
 
 namespace cloudshape::pipeline {
 using geometry::detail::UnionFind;
 
-std::vector<PointList> split_objects(const PointList& points, double resolution,
+namespace {
+
+// Spread (standard deviation) of the points across their longest direction: the second
+// principal axis. A strip along a silhouette edge has almost none.
+double spread_across(const PointList& points) {
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (const auto& p : points) mean += p;
+  mean /= static_cast<double>(points.size());
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  for (const auto& p : points) cov.noalias() += (p - mean) * (p - mean).transpose();
+  cov /= static_cast<double>(points.size());
+  const Eigen::Vector3d eig = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(cov).eigenvalues();
+  return std::sqrt(std::max(eig(1), 0.0));
+}
+
+}  // namespace
+
+std::vector<PointList> split_objects(const PointList& scene, double resolution,
                                      const config::PreprocessConfig& cfg, std::size_t* dropped) {
   if (dropped) *dropped = 0;
+  // The table or floor would join every object standing on it into one.
+  const PointList points = remove_support_plane(scene, resolution, cfg);
   const double cell = cfg.object_gap * resolution;
   if (!cfg.split_objects || points.empty() || !(cell > 0.0)) return {points};
   const geometry::Bounds b = geometry::bounding_box(points);
@@ -55,8 +77,13 @@ std::vector<PointList> split_objects(const PointList& points, double resolution,
   std::sort(parts.begin(), parts.end(), [](const PointList& a, const PointList& b) { return a.size() > b.size(); });
   const auto min_size = static_cast<std::size_t>(std::ceil(cfg.min_object_fraction * static_cast<double>(points.size())));
   std::vector<PointList> kept;
+  const double largest = static_cast<double>(parts.front().size());
+  const auto is_fragment = [&](const PointList& part) {
+    return static_cast<double>(part.size()) < cfg.fragment_max_share * largest &&
+           spread_across(part) < cfg.fragment_max_width * resolution;
+  };
   for (auto& part : parts) {
-    if (part.size() >= std::max<std::size_t>(1, min_size) || kept.empty())
+    if (kept.empty() || (part.size() >= std::max<std::size_t>(1, min_size) && !is_fragment(part)))
       kept.push_back(std::move(part));
     else if (dropped)
       *dropped += part.size();

@@ -9,10 +9,14 @@
 
 namespace cloudshape::pipeline {
 
-// Components of `points`, largest first. Cells of edge cfg.object_gap * resolution that
+// Components of `points`, largest first, after a support plane (table, floor) is cut away
+// (remove_support_plane). Cells of edge cfg.object_gap * resolution that
 // touch (26-neighbourhood) join, so objects farther apart than 2*sqrt(3) cells are always
 // split and points closer than one cell always joined. Components with fewer than
-// cfg.min_object_fraction of the points are clutter and dropped (counted in *dropped).
+// cfg.min_object_fraction of the points are clutter and dropped (counted in *dropped), and so
+// are narrow strips (spread across their length under cfg.fragment_max_width resolutions)
+// smaller than cfg.fragment_max_share of the largest component: fragments a sensor leaves
+// along silhouettes, not objects. A small solid is neither, so it stays.
 // With splitting off, or nothing to split, the one component is the whole cloud.
 std::vector<PointList> split_objects(const PointList& points, double resolution,
                                      const config::PreprocessConfig& cfg,

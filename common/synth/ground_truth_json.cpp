@@ -82,6 +82,8 @@ nlohmann::json ground_truth_json(const std::string& source, const std::vector<So
                         {"outlier_fraction", info.outlier_fraction},
                         {"outliers", info.outliers}};
   if (info.view) doc["view"] = to_array(*info.view);
+  if (info.density_falloff_from) doc["density_falloff_from"] = to_array(*info.density_falloff_from);
+  if (info.patchiness > 0.0) doc["patchiness"] = info.patchiness;
   return doc;
 }
 

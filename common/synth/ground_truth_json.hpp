@@ -22,6 +22,8 @@ struct GenerationInfo {
   double outlier_fraction = 0.0;  // relative to the clean cloud
   std::size_t outliers = 0;
   std::optional<Eigen::Vector3d> view;  // camera position when hidden points were removed
+  std::optional<Eigen::Vector3d> density_falloff_from;  // see DensityVariation
+  double patchiness = 0.0;
 };
 
 // {"shape", "dimensions": {name: value}, "pose": {"center": [x,y,z], "axes": [[...],[...],[...]]}}

@@ -1,6 +1,7 @@
 #include "synth/synthetic_cloud.hpp"
 #include "synth/perturb.hpp"
 #include "synth/sample_solid.hpp"
+#include "synth/solid_visibility.hpp"
 #include "synth/visibility.hpp"
 
 #include <random>
@@ -46,8 +47,15 @@ SyntheticCloud make_synthetic_cloud(const std::vector<SolidSpec>& objects,
   const auto sample = [&](std::size_t m) {
     return sample_objects(objects, areas, total_area, m, rng);
   };
-  cloud.points = options.view
-                     ? sample_visible(sample, total_area, options.points, *options.view, rng)
+  // The exact test, not the z-buffer: no sliver of back face leaks past a silhouette.
+  // Density thinning follows; both are filters, and sample_visible oversamples so that
+  // options.points survive them.
+  const auto keep = [&](const PointList& points) {
+    const PointList seen = options.view ? visible_on_solids(points, objects, *options.view) : points;
+    return thin_by_density(seen, options.density, rng);
+  };
+  cloud.points = options.view || options.density.active()
+                     ? sample_visible(sample, keep, options.points, rng)
                      : sample(options.points);
   add_gaussian_noise(cloud.points, options.noise_sigma, rng);
   const std::size_t clean = cloud.points.size();
@@ -59,6 +67,8 @@ SyntheticCloud make_synthetic_cloud(const std::vector<SolidSpec>& objects,
   cloud.info.outlier_fraction = options.outlier_fraction;
   cloud.info.outliers = cloud.points.size() - clean;
   cloud.info.view = options.view;
+  cloud.info.density_falloff_from = options.density.falloff_from;
+  cloud.info.patchiness = options.density.patchiness;
   return cloud;
 }
 
@@ -70,11 +80,14 @@ SyntheticCloud regenerate_from_ground_truth(const nlohmann::json& document) {
         document.at("points").get<std::size_t>() - document.at("outliers").get<std::size_t>();
     options.noise_sigma = document.at("noise_sigma").get<double>();
     options.outlier_fraction = document.at("outlier_fraction").get<double>();
-    if (document.contains("view")) {
-      const auto& v = document.at("view");
-      options.view =
-          Eigen::Vector3d(v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>());
-    }
+    const auto vector_at = [&document](const char* key) {
+      const auto& v = document.at(key);
+      return Eigen::Vector3d(v.at(0).get<double>(), v.at(1).get<double>(), v.at(2).get<double>());
+    };
+    if (document.contains("view")) options.view = vector_at("view");
+    if (document.contains("density_falloff_from"))
+      options.density.falloff_from = vector_at("density_falloff_from");
+    options.density.patchiness = document.value("patchiness", 0.0);
     return make_synthetic_cloud(objects, options, document.at("seed").get<std::uint64_t>());
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("ground truth: ") + e.what());

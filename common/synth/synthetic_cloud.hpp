@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geometry/point_cloud.hpp"
+#include "synth/density.hpp"
 #include "synth/ground_truth.hpp"
 #include "synth/ground_truth_json.hpp"
 
@@ -19,6 +20,7 @@ struct CloudOptions {
   double noise_sigma = 0.0;    // absolute, per coordinate
   double outlier_fraction = 0.0;
   std::optional<Eigen::Vector3d> view;  // camera position; hidden points removed when set
+  DensityVariation density;             // uneven sampling; the count is still `points`
 };
 
 struct SyntheticCloud {
@@ -28,7 +30,7 @@ struct SyntheticCloud {
 };
 
 // Splits options.points among the objects by surface area, samples them, keeps what the camera
-// sees (objects may occlude each other; the count is kept at options.points via sample_visible),
+// sees (exactly: solid_visibility.hpp; the count is kept at options.points via sample_visible),
 // then adds noise and outliers, in that order. All randomness comes from `seed`, so the same
 // arguments give the same cloud. Throws std::invalid_argument for an empty object list or bad
 // options.

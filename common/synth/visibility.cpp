@@ -119,6 +119,15 @@ double visibility_resolution(double area, std::size_t n) {
 
 PointList sample_visible(const std::function<PointList(std::size_t)>& sample, double area,
                          std::size_t n, const Eigen::Vector3d& camera, std::mt19937_64& rng) {
+  const auto z_buffer = [&](const PointList& points) {
+    return visible_from(points, camera, visibility_resolution(area, points.size()));
+  };
+  return sample_visible(sample, z_buffer, n, rng);
+}
+
+PointList sample_visible(const std::function<PointList(std::size_t)>& sample,
+                         const std::function<PointList(const PointList&)>& keep_visible,
+                         std::size_t n, std::mt19937_64& rng) {
   if (n == 0) return {};
   // Each pass estimates the visible fraction and oversamples by its inverse plus a margin;
   // the cap keeps a nearly invisible surface from exhausting memory.
@@ -126,7 +135,7 @@ PointList sample_visible(const std::function<PointList(std::size_t)>& sample, do
   std::size_t m = n;
   PointList visible;
   for (int pass = 0; pass < 4; ++pass) {
-    visible = visible_from(sample(m), camera, visibility_resolution(area, m));
+    visible = keep_visible(sample(m));
     if (visible.size() >= n || visible.empty() || static_cast<double>(m) >= max_samples) break;
     const double fraction = static_cast<double>(visible.size()) / static_cast<double>(m);
     m = static_cast<std::size_t>(

@@ -28,7 +28,9 @@ namespace cloudshape::synth {
 //   a bin the sampling left empty cannot reveal what lies far behind it).
 // Measured with the defaults: a sphere seen from 5 radii keeps ~92% of its visible cap (losses
 // at the grazing rim) and nothing beyond it; a cube keeps ~5-7% hidden points in slivers just
-// behind its silhouette edges; a back face one bin width or more behind is removed.
+// behind its silhouette edges; a back face one bin width or more behind is removed. Those
+// slivers are why make_synthetic_cloud uses the exact test of solid_visibility.hpp instead;
+// mesh clouds (no analytic surface) keep this z-buffer and its slivers.
 // Throws std::invalid_argument if resolution is not positive.
 PointList visible_from(const PointList& points, const Eigen::Vector3d& camera, double resolution,
                        double base_tolerance = 0.2, double slope_tolerance = 1.0);
@@ -42,5 +44,10 @@ double visibility_resolution(double area, std::size_t n);
 // removed by uniform random subsampling.
 PointList sample_visible(const std::function<PointList(std::size_t)>& sample, double area,
                          std::size_t n, const Eigen::Vector3d& camera, std::mt19937_64& rng);
+
+// The same with any visibility filter (points in, the visible ones out) instead of the z-buffer.
+PointList sample_visible(const std::function<PointList(std::size_t)>& sample,
+                         const std::function<PointList(const PointList&)>& keep_visible,
+                         std::size_t n, std::mt19937_64& rng);
 
 }  // namespace cloudshape::synth

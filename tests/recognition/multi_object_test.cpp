@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
@@ -55,6 +56,72 @@ TEST(MultiObject, SplittingOffGivesOneResult) {
   EXPECT_EQ(pipeline::recognize_cloud(cloud.points, cfg, "two").objects.size(), 2u);
   cfg.preprocess.split_objects = false;
   EXPECT_EQ(pipeline::recognize_cloud(cloud.points, cfg, "two").objects.size(), 1u);
+}
+
+// A sensor leaves narrow strips along silhouettes (mixed pixels, edge shadows); one detached
+// from its object must not come out as a second object, but a small solid must.
+TEST(MultiObject, ANarrowStripIsAFragmentButASmallSolidIsAnObject) {
+  const std::vector<synth::SolidSpec> solids = {
+      synth::make_solid(synth::ShapeKind::box, {3, 2, 1}, at(0, 0, 0, 0.3))};
+  synth::CloudOptions opts;
+  opts.points = 30000;
+  PointList points = synth::make_synthetic_cloud(solids, opts, 8).points;
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  PointList with_strip = points;
+  for (int i = 0; i < 3000; ++i)  // 3 long, 0.12 wide, flat: 10% of the box's points
+    with_strip.emplace_back(-1.5 + 3.0 * u(rng), 3.0 + 0.12 * u(rng), 0.0);
+  const auto stripped = pipeline::recognize_cloud(with_strip, config::PipelineConfig{}, "strip");
+  ASSERT_EQ(stripped.objects.size(), 1u);
+  EXPECT_EQ(stripped.objects.front().shape, "box");
+  config::PipelineConfig keep_fragments;
+  keep_fragments.preprocess.fragment_max_share = 0.0;
+  EXPECT_EQ(pipeline::recognize_cloud(with_strip, keep_fragments, "strip").objects.size(), 2u);
+
+  const auto small = synth::make_synthetic_cloud(
+      {synth::make_solid(synth::ShapeKind::sphere, {0.25}, at(0, 4, 0, 0))}, [] {
+        synth::CloudOptions o;
+        o.points = 1500;
+        return o;
+      }(), 10);
+  PointList with_small = points;
+  with_small.insert(with_small.end(), small.points.begin(), small.points.end());
+  const auto both = pipeline::recognize_cloud(with_small, config::PipelineConfig{}, "small");
+  ASSERT_EQ(both.objects.size(), 2u);
+  EXPECT_EQ(both.objects[1].shape, "sphere");
+}
+
+// Objects standing on a table much larger than they are: the table goes, the objects stay.
+TEST(MultiObject, ATableUnderTheObjectsIsRemoved) {
+  const std::vector<synth::SolidSpec> solids = {
+      synth::make_solid(synth::ShapeKind::box, {3, 2, 1}, at(0, 0, 0.5, 0.0)),
+      synth::make_solid(synth::ShapeKind::cylinder, {0.8, 2.0}, [] {
+        synth::Pose p;  // axis (local x) up: standing on a cap
+        p.center = Eigen::Vector3d(4, 1, 1.0);
+        p.axes = Eigen::AngleAxisd(-1.5707963267948966, Eigen::Vector3d::UnitY()).toRotationMatrix().transpose();
+        return p;
+      }())};
+  synth::CloudOptions opts;
+  opts.points = 20000;
+  opts.view = Eigen::Vector3d(2, -12, 10);
+  PointList points = synth::make_synthetic_cloud(solids, opts, 12).points;
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-6.0, 8.0);
+  for (int i = 0; i < 30000; ++i) {  // the table top, hidden under the objects
+    const Point p(u(rng), u(rng) - 1.0, 0.0);
+    const bool under_box = std::abs(p.x()) < 1.5 && std::abs(p.y()) < 1.0;
+    const bool under_cylinder = (p - Point(4, 1, 0)).norm() < 0.8;
+    if (!under_box && !under_cylinder) points.push_back(p);
+  }
+  const auto cfg = config::PipelineConfig{};
+  const auto result = pipeline::recognize_cloud(points, cfg, "table");
+  ASSERT_EQ(result.objects.size(), 2u);
+  std::vector<std::string> shapes{result.objects[0].shape, result.objects[1].shape};
+  std::sort(shapes.begin(), shapes.end());
+  EXPECT_EQ(shapes, (std::vector<std::string>{"box", "cylinder"}));
+  config::PipelineConfig keep_table;
+  keep_table.preprocess.remove_support_plane = false;
+  EXPECT_EQ(pipeline::recognize_cloud(points, keep_table, "table").objects.size(), 1u);
 }
 
 TEST(SingleView, ABoxSeenFromOneSideIsPartial) {

@@ -2,6 +2,7 @@
 #include "synth/synthetic_cloud.hpp"
 #include "surface_oracle.hpp"
 #include "synth/random_solid.hpp"
+#include "synth/sample_solid.hpp"
 
 #include <gtest/gtest.h>
 
@@ -55,12 +56,46 @@ TEST(SyntheticCloud, RegeneratesFromItsGroundTruth) {
   options.noise_sigma = 0.02;
   options.outlier_fraction = 0.05;
   options.view = Eigen::Vector3d(40, -10, 25);
+  options.density.falloff_from = Eigen::Vector3d(30, 0, 0);
+  options.density.patchiness = 0.5;
   const auto cloud = make_synthetic_cloud({random_solid(ShapeKind::cone, rng, 10.0)}, options,
                                           0xfedcba9876543210ull);
   const auto text = ground_truth_json("c.pcd", cloud.objects, cloud.info).dump();
   EXPECT_EQ(regenerate_from_ground_truth(nlohmann::json::parse(text)).points, cloud.points);
   EXPECT_THROW(regenerate_from_ground_truth(nlohmann::json::parse(R"({"objects": []})")),
                std::invalid_argument);
+}
+
+// Density falling with the squared distance from a camera: a sphere's far half gets far
+// fewer points than its near half, and the count asked for is still met.
+TEST(SyntheticCloud, DensityFallsWithDistanceAndPatchesLosePoints) {
+  const SolidSpec sphere = make_solid(ShapeKind::sphere, {1.0});
+  CloudOptions options;
+  options.points = 20000;
+  options.density.falloff_from = Eigen::Vector3d(3, 0, 0);
+  const auto cloud = make_synthetic_cloud({sphere}, options, 9);
+  ASSERT_EQ(cloud.points.size(), 20000u);
+  std::size_t near = 0;
+  for (const auto& p : cloud.points) near += p.x() > 0.0 ? 1 : 0;
+  // Kept with probability (2 / d)^2: ~0.59 on the near half, ~0.27 on the far half.
+  EXPECT_NEAR(static_cast<double>(near) / cloud.points.size(), 0.69, 0.03);
+
+  CloudOptions patchy;
+  patchy.points = 20000;
+  patchy.density.patchiness = 1.0;
+  const auto holes = make_synthetic_cloud({sphere}, patchy, 10);
+  ASSERT_EQ(holes.points.size(), 20000u);
+  // Patches emptied at their centres: some 0.1-radius cap of the sphere now holds (almost)
+  // no point, where an even sampling puts ~50 in every one.
+  std::mt19937_64 rng(11);
+  std::size_t emptiest = holes.points.size();
+  for (const auto& c : sample_solid_surface(sphere, 200, rng)) {
+    std::size_t in = 0;
+    for (const auto& p : holes.points) in += (p - c).norm() < 0.1 ? 1 : 0;
+    emptiest = std::min(emptiest, in);
+  }
+  EXPECT_LT(emptiest, 5u);
+  EXPECT_THROW(thin_by_density(holes.points, {std::nullopt, 1.5}, rng), std::invalid_argument);
 }
 
 TEST(SyntheticCloud, RejectsNoObjects) {

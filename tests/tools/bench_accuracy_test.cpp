@@ -35,8 +35,8 @@ TEST(BenchAccuracy, SmokeRunPrintsEveryConditionAsJson) {
       EXPECT_GE(all.at("recognized_pct").get<double>(), 50.0);
     }
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"clean", "noise", "outliers", "single_view", "multi",
-                                             "real"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"clean", "noise", "outliers", "density",
+                                             "single_view", "table_view", "multi", "real"}));
 }
 
 TEST(BenchAccuracy, UnknownConditionIsAnError) {

@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "accuracy_report.hpp"
+#include "io/cloud_writers.hpp"
 #include "pipeline/recognize.hpp"
 
 namespace cloudshape::bench {
@@ -34,8 +35,24 @@ SampleRow sample_row(const TestCloud& cloud, const pipeline::RecognitionResult& 
   return row;
 }
 
-ConditionReport run_condition(const std::string& name, const SuiteOptions& suite,
+// One line per cloud: what it holds, what came out, so a failing cloud can be found by name.
+void print_cloud_line(const TestCloud& cloud, const pipeline::RecognitionResult& r) {
+  std::string truths, results;
+  for (const auto& t : cloud.truths) truths += " " + t.shape + "{" + dimensions_text(t.dimensions) + "}";
+  for (const auto& o : r.objects) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " conf=%.2f%s", o.confidence, o.partial ? " partial" : "");
+    results += " " + o.shape + "{" + dimensions_text(o.dimensions) + "}" + buf +
+               (o.reason.empty() ? "" : " (" + o.reason + ")");
+  }
+  std::fprintf(stderr, "cloud %s points=%zu %s| truth:%s | got:%s\n", cloud.source.c_str(),
+               cloud.points.size(), cloud.note.empty() ? "" : (cloud.note + " ").c_str(),
+               truths.c_str(), results.c_str());
+}
+
+ConditionReport run_condition(const std::string& name, const AccuracyOptions& options,
                               const config::PipelineConfig& cfg, bool progress) {
+  const SuiteOptions& suite = options.suite;
   ConditionReport report;
   report.name = name;
   report.description = describe_condition(name);
@@ -64,6 +81,10 @@ ConditionReport run_condition(const std::string& name, const SuiteOptions& suite
       std::fprintf(stderr, "\ncloudshape-bench: %s: recognize_cloud threw: %s\n",
                    cloud.source.c_str(), e.what());
     }
+    if (!options.save_dir.empty())
+      io::write_pcd(options.save_dir + "/" + cloud.source + ".pcd", cloud.points,
+                    io::PcdEncoding::binary, true);
+    if (options.per_cloud) print_cloud_line(cloud, result);
     score_cloud(cloud, result, report.tallies);
     if (name == "real") report.samples.push_back(sample_row(cloud, result));
     ++report.clouds;
@@ -83,12 +104,12 @@ int run_accuracy(const AccuracyOptions& options, const config::PipelineConfig& c
     }
   }
   // A progress line only where someone watches: redirected logs stay readable.
-  const bool progress = isatty(fileno(stderr)) != 0;
+  const bool progress = isatty(fileno(stderr)) != 0 && !options.per_cloud;
   std::vector<ConditionReport> reports;
   for (const auto& name : known) {
     const auto& chosen = options.conditions;
     if (!chosen.empty() && std::find(chosen.begin(), chosen.end(), name) == chosen.end()) continue;
-    reports.push_back(run_condition(name, options.suite, cfg, progress));
+    reports.push_back(run_condition(name, options, cfg, progress));
   }
   if (progress) std::fprintf(stderr, "\r%70s\r", "");
 

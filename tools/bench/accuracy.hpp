@@ -14,6 +14,8 @@ struct AccuracyOptions {
   SuiteOptions suite;
   std::vector<std::string> conditions;  // empty: all of accuracy_conditions()
   bool json = false;
+  bool per_cloud = false;  // one line per cloud on stderr: truths, results, view note
+  std::string save_dir;   // when set, every cloud is also written there as <source>.pcd
   std::string config_label;  // what --json reports as the configuration used
 };
 

@@ -42,16 +42,6 @@ std::string wrong_as(const Tally& t) {
   return s.empty() ? "-" : s;
 }
 
-std::string dims(const std::vector<std::pair<std::string, double>>& d) {
-  std::string s;
-  for (const auto& [name, v] : d) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%s%s %.4g", s.empty() ? "" : ", ", name.c_str(), v);
-    s += buf;
-  }
-  return s.empty() ? "-" : s;
-}
-
 nlohmann::ordered_json quantile_or_null(const std::vector<double>& v, double q) {
   return v.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(percentile(v, q));
 }
@@ -75,6 +65,16 @@ nlohmann::ordered_json row_json(const std::string& shape, const Tally& t) {
 }
 
 }  // namespace
+
+std::string dimensions_text(const std::vector<std::pair<std::string, double>>& d) {
+  std::string s;
+  for (const auto& [name, v] : d) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s%s %.4g", s.empty() ? "" : ", ", name.c_str(), v);
+    s += buf;
+  }
+  return s.empty() ? "-" : s;
+}
 
 void print_accuracy_table(const std::vector<ConditionReport>& reports, std::FILE* out) {
   std::fprintf(out,
@@ -105,8 +105,8 @@ void print_accuracy_table(const std::vector<ConditionReport>& reports, std::FILE
           s.results > 1 ? "  (" + std::to_string(s.results) + " objects)" : "";
       std::fprintf(out, "  %-44s %-16s -> %-16s conf %.2f%s  truth {%s}  got {%s}%s\n",
                    s.label.c_str(), s.expected.c_str(), s.got.c_str(), s.confidence,
-                   s.partial ? " partial" : "", dims(s.truth_dimensions).c_str(),
-                   dims(s.got_dimensions).c_str(), several.c_str());
+                   s.partial ? " partial" : "", dimensions_text(s.truth_dimensions).c_str(),
+                   dimensions_text(s.got_dimensions).c_str(), several.c_str());
     }
   }
   std::fprintf(out, "\n");

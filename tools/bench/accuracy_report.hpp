@@ -36,6 +36,9 @@ struct ConditionReport {
 
 void print_accuracy_table(const std::vector<ConditionReport>& reports, std::FILE* out);
 
+// "length 30, width 20" (4 significant digits); "-" when there is none.
+std::string dimensions_text(const std::vector<std::pair<std::string, double>>& dimensions);
+
 nlohmann::ordered_json accuracy_json(const std::vector<ConditionReport>& reports,
                                      const nlohmann::ordered_json& settings);
 

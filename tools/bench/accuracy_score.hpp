@@ -39,6 +39,7 @@ struct TestCloud {
   // Multi-object clouds only match a result within 0.5 size of a truth; with one truth the
   // nearest result is its answer wherever it lies (its centre error then says how far).
   bool gate_matching = false;
+  std::string note;  // how the cloud was made, for --per-cloud (e.g. the view angle)
 };
 
 // Everything one table row aggregates (one condition x one truth shape).

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "accuracy_real.hpp"
 #include "synth/random_solid.hpp"
+#include "synth/resting_pose.hpp"
 #include "synth/sample_solid.hpp"
 #include "synth/synthetic_cloud.hpp"
 
@@ -97,8 +99,11 @@ std::pair<double, double> extent_along(const PointList& points, const Eigen::Vec
 }
 
 // The truth of a single view: what the kept points show. Box: the three extents along its
-// axes, re-sorted (axes permuted with them); cylinder, cone, prism: the extent along the
-// axis as height. Radius, side and edge stay true: a fit recovers them from part of the surface.
+// axes, re-sorted (axes permuted with them); cylinder, prism: the extent along the axis as
+// height. Cone: a fit of its side always finds the apex, so its height runs from the apex
+// down to the lowest point seen, and its radius is the cone's radius there (the true ones
+// when the base is seen). Radius, side and edge stay true otherwise: a fit recovers them
+// from part of the surface.
 Truth shown_truth(const SolidSpec& spec, const PointList& kept) {
   Truth t = truth_of(spec);
   if (kept.empty()) return t;
@@ -114,8 +119,13 @@ Truth shown_truth(const SolidSpec& spec, const PointList& kept) {
       t.axes.row(i) = spec.pose.axes.row(ext[i].second);
     }
     t.axis_checks = axis_checks(t.shape, t.dimensions);
-  } else if (spec.kind == ShapeKind::cylinder || spec.kind == ShapeKind::cone ||
-             spec.kind == ShapeKind::pentagonal_prism) {
+  } else if (spec.kind == ShapeKind::cone) {
+    const double h = synth::dimension(spec, "height");
+    const auto [lo, hi] = extent_along(kept, spec.pose.axes.row(0).transpose());
+    const double shown = std::clamp(spec.pose.center.dot(spec.pose.axes.row(0)) + h - lo, 0.0, h);
+    for (auto& [name, value] : t.dimensions) value *= shown / h;  // radius and height alike
+    (void)hi;
+  } else if (spec.kind == ShapeKind::cylinder || spec.kind == ShapeKind::pentagonal_prism) {
     const auto [lo, hi] = extent_along(kept, spec.pose.axes.row(0).transpose());
     for (auto& [name, value] : t.dimensions)
       if (name == "height") value = hi - lo;
@@ -123,12 +133,17 @@ Truth shown_truth(const SolidSpec& spec, const PointList& kept) {
   return t;
 }
 
-// Camera 3 sizes from the centre, uniform over the upper hemisphere of world z; then the
-// "table": every point within the lowest 2% of the solid's world-z range is dropped.
-TestCloud single_view_cloud(const Drawn& d, std::uint64_t cloud_seed, double size) {
+// Camera 3 sizes from the centre; then the "table": every point within the lowest 2% of the
+// solid's world-z range is dropped. single_view: the solid in its random pose (often balanced
+// on an edge or corner), the camera uniform over the upper hemisphere of world z. table_view:
+// the solid lies at rest on a face, cap or side (place_at_rest), the camera looks down at it
+// from 15-75 degrees above the table, as a camera over a table does.
+TestCloud single_view_cloud(Drawn d, std::uint64_t cloud_seed, double size, bool at_rest) {
   std::mt19937_64 rng(cloud_seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double z = u(rng), phi = 2.0 * kPi * u(rng), r = std::sqrt(1.0 - z * z);
+  if (at_rest) synth::place_at_rest(d.spec, rng);
+  const double z = at_rest ? std::sin((15.0 + 60.0 * u(rng)) * kPi / 180.0) : u(rng);
+  const double phi = 2.0 * kPi * u(rng), r = std::sqrt(1.0 - z * z);
   synth::CloudOptions options;
   options.points = d.points;
   options.view =
@@ -143,6 +158,24 @@ TestCloud single_view_cloud(const Drawn& d, std::uint64_t cloud_seed, double siz
       points.end());
   TestCloud cloud;
   cloud.truths.push_back(shown_truth(d.spec, points));
+  // Where the camera looks from, relative to the solid: the angle between its local axes[0]
+  // (a cone's base-to-apex direction) and the direction to the camera, and between world up.
+  const Eigen::Vector3d to_camera = (*options.view - d.spec.pose.center).normalized();
+  char note[96];
+  std::snprintf(note, sizeof note, "view_to_axis0=%.0fdeg axis0_to_up=%.0fdeg",
+                std::acos(std::clamp(to_camera.dot(d.spec.pose.axes.row(0)), -1.0, 1.0)) * 180 / kPi,
+                std::acos(std::clamp(d.spec.pose.axes(0, 2), -1.0, 1.0)) * 180 / kPi);
+  cloud.note = note;
+  if (d.spec.kind == ShapeKind::cone) {
+    // How much of the visible cloud is lateral surface rather than base disc.
+    std::size_t lateral = 0;
+    for (const auto& p : points)
+      lateral += (p - d.spec.pose.center).dot(d.spec.pose.axes.row(0)) > 0.01 * size ? 1 : 0;
+    std::snprintf(note, sizeof note, " lateral=%.1f%% true_height=%.4g", 
+                  100.0 * lateral / std::max<std::size_t>(points.size(), 1),
+                  d.spec.dimensions[1].second);
+    cloud.note += note;
+  }
   cloud.points = std::move(points);
   return cloud;
 }
@@ -191,8 +224,8 @@ TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double
 }  // namespace
 
 const std::vector<std::string>& accuracy_conditions() {
-  static const std::vector<std::string> names = {"clean",       "noise", "outliers",
-                                                 "single_view", "multi", "real"};
+  static const std::vector<std::string> names = {
+      "clean", "noise", "outliers", "density", "single_view", "table_view", "multi", "real"};
   return names;
 }
 
@@ -203,6 +236,12 @@ std::string describe_condition(const std::string& c) {
   if (c == "single_view")
     return "one camera 3 sizes away, uniform over the upper hemisphere; points in the lowest "
            "2% of the solid's z range dropped (table); truth = extents shown";
+  if (c == "density")
+    return "complete surface; density falls with the squared distance from a point 3 sizes "
+           "away (random direction), and 6 patches lose up to 80% of their points";
+  if (c == "table_view")
+    return "the solid at rest on a face, cap or side (random), camera 3 sizes away, 15-75 deg "
+           "above the table, any azimuth; lowest 2% of z dropped (table); truth = extents shown";
   if (c == "multi")
     return "2-4 solids >1 size apart, the first of the row's shape; match by centre within 0.5 "
            "size (an unknown result has no centre: missed + false)";
@@ -220,10 +259,13 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
     return make_real_cloud(present_real_samples(o.shared_data_dir).at(index), o.shared_data_dir);
   const std::size_t shape = index / static_cast<std::size_t>(o.count);
   const std::size_t i = index % static_cast<std::size_t>(o.count);
-  const auto& names = accuracy_conditions();
-  const auto pos = std::find(names.begin(), names.end(), condition);
-  if (pos == names.end()) throw std::invalid_argument("unknown condition '" + condition + "'");
-  const std::uint64_t cloud_seed = stream(o.seed, 2 + (pos - names.begin()), shape, i);
+  // Stream ids in the order the conditions were added, not the report's, so a new condition
+  // moves no existing cloud.
+  static const std::vector<std::string> stream_order = {
+      "clean", "noise", "outliers", "single_view", "multi", "real", "table_view", "density"};
+  const auto pos = std::find(stream_order.begin(), stream_order.end(), condition);
+  if (pos == stream_order.end()) throw std::invalid_argument("unknown condition '" + condition + "'");
+  const std::uint64_t cloud_seed = stream(o.seed, 2 + (pos - stream_order.begin()), shape, i);
   const std::string source =
       condition + "-" + synth::to_string(synth::all_shape_kinds()[shape]) + "-" + std::to_string(i);
 
@@ -232,8 +274,8 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
     cloud = multi_object_cloud(shape, cloud_seed, o.solid_size);
   } else {
     const Drawn d = draw_solid(shape, i, o);
-    if (condition == "single_view") {
-      cloud = single_view_cloud(d, cloud_seed, o.solid_size);
+    if (condition == "single_view" || condition == "table_view") {
+      cloud = single_view_cloud(d, cloud_seed, o.solid_size, condition == "table_view");
     } else {
       const double size = synth::characteristic_size(d.spec);
       synth::CloudOptions options;
@@ -242,6 +284,13 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
                             : condition == "outliers" ? 0.01 * size
                                                       : 0.0;
       options.outlier_fraction = condition == "outliers" ? 0.03 : 0.0;
+      if (condition == "density") {
+        std::mt19937_64 rng(cloud_seed ^ 0xde);
+        std::normal_distribution<double> gauss(0.0, 1.0);
+        const Eigen::Vector3d dir = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
+        options.density.falloff_from = d.spec.pose.center + 3.0 * o.solid_size * dir;
+        options.density.patchiness = 0.8;
+      }
       cloud.points = synth::make_synthetic_cloud({d.spec}, options, cloud_seed).points;
       cloud.truths.push_back(truth_of(d.spec));
     }

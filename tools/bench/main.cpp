@@ -3,7 +3,8 @@
 //   cloudshape-bench [--sizes 10000,100000,1000000] [--shapes box,cone,...] [--reps R]
 //                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--json]
 //   cloudshape-bench --accuracy [--count N] [--conditions clean,noise,...] [--seed S]
-//                    [--config FILE] [--json]      (how right it is: see accuracy.hpp)
+//                    [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
+//                    (how right it is: see accuracy.hpp)
 //
 // For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
 // its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
@@ -124,6 +125,8 @@ int main(int argc, char** argv) {
   bool accuracy = false;
   int count = 30;
   std::string conditions_arg;
+  bool per_cloud = false;
+  std::string save_dir;
   app.add_option("--sizes", sizes_arg, "comma-separated point counts")->capture_default_str();
   app.add_option("--shapes", shapes_arg,
                  "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere");
@@ -139,12 +142,16 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "machine-readable output");
   app.add_flag("--accuracy", accuracy,
                "measure recognition accuracy instead of timings (clean, noise, outliers, "
-               "single_view, multi, real)");
+               "density, single_view, table_view, multi, real)");
   app.add_option("--count", count, "--accuracy: clouds per shape per condition")
       ->capture_default_str();
   app.add_option("--conditions", conditions_arg,
                  "--accuracy: comma-separated subset of "
-                 "clean,noise,outliers,single_view,multi,real");
+                 "clean,noise,outliers,density,single_view,table_view,multi,real");
+  app.add_flag("--per-cloud", per_cloud,
+               "--accuracy: one line per cloud on stderr (truths, results, how it was made)");
+  app.add_option("--save-clouds", save_dir,
+                 "--accuracy: also write every cloud to DIR/<condition>-<shape>-<i>.pcd");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -201,6 +208,8 @@ int main(int argc, char** argv) {
     options.suite.shared_data_dir = CLOUDSHAPE_SHARED_DATA_DIR;
     options.conditions = split(conditions_arg);
     options.json = json;
+    options.per_cloud = per_cloud;
+    options.save_dir = save_dir;
     options.config_label = config_path.empty() ? "built-in defaults" : config_path;
     return cs::bench::run_accuracy(options, cfg);
   }

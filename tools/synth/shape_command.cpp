@@ -24,6 +24,8 @@ struct ShapeArgs {
   double noise = 0.0;
   double outliers = 0.0;
   std::string view;
+  std::string density_from;
+  double patchy = 0.0;
   std::string output;
   std::string pcd_encoding = "binary";
 };
@@ -56,6 +58,9 @@ void run_shape(const ShapeArgs& args) {
   options.noise_sigma = args.noise * synth::characteristic_size(spec);
   options.outlier_fraction = args.outliers;
   if (!args.view.empty()) options.view = parse_point(args.view, "--view");
+  if (!args.density_from.empty())
+    options.density.falloff_from = parse_point(args.density_from, "--density-from");
+  options.density.patchiness = args.patchy;
 
   const auto cloud = synth::make_synthetic_cloud({spec}, options, args.seed);
   write_cloud(args.output, cloud.points, encoding);
@@ -89,6 +94,11 @@ void add_shape_command(CLI::App& app) {
   cmd->add_option("--outliers", args->outliers, "Outliers to add, as a fraction of the points")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--view", args->view, "Camera X,Y,Z: keep only what it sees");
+  cmd->add_option("--density-from", args->density_from,
+                  "X,Y,Z: point density falls with the squared distance from here (a camera)");
+  cmd->add_option("--patchy", args->patchy,
+                  "0..1: share of the points lost at the centre of 6 random patches")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("-o,--output", args->output, "Output cloud (.pcd, .ply, .xyz)")->required();
   cmd->add_option("--pcd-encoding", args->pcd_encoding, "ascii, binary or binary_compressed")
       ->capture_default_str();
