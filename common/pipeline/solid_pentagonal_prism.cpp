@@ -74,6 +74,31 @@ Eigen::Vector3d refine_axis(const PrismFaces& set) {
   return axis.dot(set.axis) < 0 ? Eigen::Vector3d(-axis) : axis;
 }
 
+// Width of a face's points along `across`, between their 2nd and 98th percentiles.
+double side_span(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& across) {
+  std::vector<double> t;
+  t.reserve(face.inliers.size());
+  for (std::uint32_t i : face.inliers) t.push_back(cloud[i].dot(across));
+  if (t.size() < 2) return 0.0;
+  const auto at = [&t](double q) {
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(t.size() - 1));
+    std::nth_element(t.begin(), t.begin() + k, t.end());
+    return t[k];
+  };
+  const double lo = at(0.02);
+  return at(0.98) - lo;
+}
+
+// Points of the planes (faces or not) whose normals are perpendicular to the axis.
+std::size_t points_around(const PlaneSegmentation& planes, const Eigen::Vector3d& axis,
+                          const config::SolveConfig& cfg) {
+  const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
+  std::size_t n = 0;
+  for (const DetectedPlane& p : planes.planes)
+    if (std::abs(p.plane.normal.dot(axis)) < sin_perp) n += p.inliers.size();
+  return n;
+}
+
 }  // namespace
 
 std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
@@ -93,10 +118,13 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   std::array<Eigen::Vector3d, 5> normals;
   for (int k = 0; k < 5; ++k)
     normals[k] = std::cos(phi0 + k * kSideStep) * u + std::sin(phi0 + k * kSideStep) * v;
-  std::vector<Eigen::Vector3d> face_normals(normals.begin(), normals.end());
-  face_normals.push_back(axis);
-  face_normals.push_back(-axis);
-  if (detail::share_on_planes_along(in, face_normals, in.cfg.parallel_degrees) < in.cfg.polyhedron_face_share)
+  // The prism must account for the points, and its sides for the planes around its axis:
+  // tangent strips of a curved side lie around the axis at every angle, not at 72 deg steps.
+  const std::vector<Eigen::Vector3d> side_normals(normals.begin(), normals.end());
+  const auto on_sides = detail::points_on_planes_along(in.planes, side_normals, in.cfg.parallel_degrees);
+  const auto on_caps = detail::points_on_planes_along(in.planes, {axis, -axis}, in.cfg.parallel_degrees);
+  if (static_cast<double>(on_sides + on_caps) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()) ||
+      static_cast<double>(on_sides) < in.cfg.polyhedron_face_share * static_cast<double>(points_around(in.planes, axis, in.cfg)))
     return std::nullopt;
 
   // Where each side's plane lies along its normal: a seen side where its points are; a
@@ -105,11 +133,13 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   // (or along a cap's edge, which a partly hidden cap does not show): it stays free.
   std::array<double, 5> offset{}, weight{};
   std::array<bool, 5> seen{}, known{};
+  std::array<const DetectedPlane*, 5> seen_face{};
   for (const DetectedPlane* f : found->sides) {
     const double phi = std::atan2(f->plane.normal.dot(v), f->plane.normal.dot(u));
     const int k = static_cast<int>(std::lround((phi - phi0) / kSideStep) % 5 + 5) % 5;
     if (seen[k]) continue;
     seen[k] = known[k] = true;
+    seen_face[k] = f;
     offset[k] = detail::face_position(in.cloud, *f, normals[k]);
     weight[k] = std::sqrt(static_cast<double>(f->inliers.size()));
   }
@@ -167,10 +197,19 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   hi -= on_axis.dot(axis);
   const double height = hi - lo;
   if (!(height > 0.0)) return std::nullopt;
+  // A seen side is seen whole, across its width: a strip of a curved surface is narrow.
+  // Near each edge a side's plane may lose a band (the verification's tolerance) of its
+  // points to the neighbouring side.
+  const double side = 2.0 * apothem * std::tan(kPi / 5.0);
+  const double edge_band = in.cfg.inlier_distance * in.resolution;
+  for (int k = 0; k < 5; ++k)
+    if (seen_face[k] && side_span(in.cloud, *seen_face[k], axis.cross(normals[k])) + 2.0 * edge_band <
+                            in.cfg.min_side_span * side)
+      return std::nullopt;
 
   FittedSolid out;
   out.shape = Shape::pentagonal_prism;
-  out.dimensions = {{"side", 2.0 * apothem * std::tan(kPi / 5.0)}, {"height", height}};
+  out.dimensions = {{"side", side}, {"height", height}};
   out.center = on_axis + 0.5 * (lo + hi) * axis;
   out.axes.row(0) = axis.transpose();
   out.axes.row(1) = normals[0].transpose();

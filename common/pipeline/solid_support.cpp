@@ -119,18 +119,17 @@ double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction) 
   return slab_median_extent(in.cloud, direction, slab, nan, nan, in.cfg.open_end_quantile).second;
 }
 
-double share_on_planes_along(const SolveInput& in, const std::vector<Eigen::Vector3d>& normals,
-                             double degrees) {
-  if (in.cloud.empty()) return 0.0;
+std::size_t points_on_planes_along(const PlaneSegmentation& planes,
+                                   const std::vector<Eigen::Vector3d>& normals, double degrees) {
   const double min_cos = std::cos(degrees * 3.14159265358979323846 / 180.0);
   std::size_t on = 0;
-  for (const DetectedPlane& p : in.planes.planes)
+  for (const DetectedPlane& p : planes.planes)
     for (const Eigen::Vector3d& n : normals)
       if (p.plane.normal.dot(n) >= min_cos) {
         on += p.inliers.size();
         break;
       }
-  return static_cast<double>(on) / static_cast<double>(in.cloud.size());
+  return on;
 }
 
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,

@@ -175,7 +175,8 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   if (!vertices) return std::nullopt;
   std::vector<Eigen::Vector3d> normals;
   for (const geometry::Plane& p : face_planes(*vertices)) normals.push_back(p.normal);
-  if (detail::share_on_planes_along(in, normals, in.cfg.parallel_degrees) < in.cfg.polyhedron_face_share)
+  const auto on_faces = detail::points_on_planes_along(in.planes, normals, in.cfg.parallel_degrees);
+  if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
     return std::nullopt;
   return make_tetrahedron(*vertices);
 }

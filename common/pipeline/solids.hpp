@@ -102,12 +102,12 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
 // of the extent along `direction`, at least two resolutions).
 double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction);
 
-// Share of the cloud's points in planes (true faces or not) whose outward normal lies
-// within `degrees` of one of `normals`: how much of the cloud a polyhedron with these face
-// directions accounts for. Every plane on a polyhedron is one of its faces; the tangent
-// strips RANSAC cuts from a curved surface point every way.
-double share_on_planes_along(const SolveInput& in, const std::vector<Eigen::Vector3d>& normals,
-                             double degrees);
+// Points in planes (true faces or not) whose outward normal lies within `degrees` of one
+// of `normals`: how much of the cloud a polyhedron with these face directions accounts
+// for. Every plane on a polyhedron is one of its faces; the tangent strips RANSAC cuts
+// from a curved surface point every way.
+std::size_t points_on_planes_along(const PlaneSegmentation& planes,
+                                   const std::vector<Eigen::Vector3d>& normals, double degrees);
 
 // Points that lie on none of the given faces, nor within `band` of their planes: noisy
 // points of a face that fell outside its fine RANSAC band are still the face's.
