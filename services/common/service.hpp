@@ -107,6 +107,7 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
   const std::atomic<bool>& stop = install_stop_flag();
   dds::Participant participant(dds::resolve_domain(opt.domain), "cloudshape-" + opt.name,
                                dds::resolve_security_dir(opt.security_dir));
+  for (const std::string& w : participant.warnings()) spdlog::warn("{}", w);
   StatusReporter status(participant, opt);
   dds::Writer<OutSpec> writer(participant, out_spec);
 

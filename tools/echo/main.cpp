@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
         cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
         cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
                                                                   : std::nullopt));
+    for (const std::string& w : participant.warnings()) std::fprintf(stderr, "%s: warning: %s\n", kTool, w.c_str());
     if (status) {
       return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,
                   [](const cs::msg::ServiceStatus& s) {

@@ -105,6 +105,7 @@ int main(int argc, char** argv) {
         cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
         cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
                                                                   : std::nullopt));
+    for (const std::string& w : participant.warnings()) say("warning: " + w);
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
