@@ -105,6 +105,7 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
   using Out = typename OutSpec::Message;
   const std::atomic<bool>& stop = install_stop_flag();
   dds::Participant participant = dds::open_participant(opt.participant_args, "cloudshape-" + opt.name);
+  for (const std::string& w : participant.warnings()) spdlog::warn("{}", w);
   StatusReporter status(participant, opt);
   dds::Writer<OutSpec> writer(participant, out_spec);
 

@@ -88,6 +88,7 @@ int main(int argc, char** argv) {
   std::signal(SIGTERM, on_signal);
   try {
     cs::dds::Participant participant = cs::dds::open_participant(participant_args, kTool);
+    for (const std::string& w : participant.warnings()) std::fprintf(stderr, "%s: warning: %s\n", kTool, w.c_str());
     if (status) {
       return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,
                   [](const cs::msg::ServiceStatus& s) {

@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> files = expand(args);
   try {
     cs::dds::Participant participant = cs::dds::open_participant(participant_args, kTool);
+    for (const std::string& w : participant.warnings()) say("warning: " + w);
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
