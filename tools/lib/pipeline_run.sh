@@ -1,5 +1,8 @@
 # Shared by tools/bench_dds.sh and tools/soak.sh (source it after lib/deps.sh, don't run it):
 # a scratch folder, cloudshape-echo and the five services on one domain, and their clean-up.
+# Sets: bin (build/bin), work (the scratch folder, removed on exit; the services log to
+# $work/logs), launch (tools/launch.sh), echo_pid, helper_pids (add the script's own
+# background processes; they are ended first).
 # shellcheck shell=bash
 # shellcheck disable=SC2034  # bin, work, launch: read by the scripts that source this
 
@@ -8,7 +11,7 @@ work="$(mktemp -d)"
 export CLOUDSHAPE_LOG_DIR="$work/logs"
 launch="$CLOUDSHAPE_REPO/tools/launch.sh"
 echo_pid=""
-helper_pids=()  # the script's own background processes (e.g. a sampler), ended first on exit
+helper_pids=()
 
 # shellcheck disable=SC2317  # called by the EXIT trap
 cs_pipeline_cleanup() {
