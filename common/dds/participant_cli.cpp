@@ -5,10 +5,9 @@
 namespace cloudshape::dds {
 
 void add_domain_option(CLI::App& app, std::optional<int>& domain) {
-  // A negative id counts as not given, so CLOUDSHAPE_DOMAIN (else 0) applies.
+  // Kept as given: resolve_domain refuses an id outside 0..232 with a message naming it.
   app.add_option_function<int>(
-      "--domain",
-      [&domain](const int& id) { domain = id >= 0 ? std::optional<int>(id) : std::nullopt; },
+      "--domain", [&domain](const int& id) { domain = id; },
       "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
 }
 
