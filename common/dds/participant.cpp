@@ -6,6 +6,7 @@
 #include <mutex>
 
 #include "dds/security.hpp"
+#include "dds/socket_buffers.hpp"
 
 namespace cloudshape::dds {
 namespace fdds = eprosima::fastdds::dds;
@@ -61,16 +62,27 @@ std::string qos_file_path() {
   return CLOUDSHAPE_SOURCE_QOS;
 }
 
-Participant::Participant(int domain, const std::string& name, const std::optional<std::string>& security_dir)
-    : domain_(domain), secured_(security_dir.has_value()) {
-  load_profiles_once();
+std::string participant_profile() {
   const char* env = std::getenv("CLOUDSHAPE_DDS_PROFILE");
-  const std::string profile = (env != nullptr && *env != '\0') ? env : kDefaultParticipantProfile;
-  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  return (env != nullptr && *env != '\0') ? env : kDefaultParticipantProfile;
+}
+
+fdds::DomainParticipantQos participant_qos(const std::string& profile) {
+  load_profiles_once();
   fdds::DomainParticipantQos qos;
-  if (factory->get_participant_qos_from_profile(profile, qos) != ReturnCode_t::RETCODE_OK) {
+  if (fdds::DomainParticipantFactory::get_instance()->get_participant_qos_from_profile(profile, qos) !=
+      ReturnCode_t::RETCODE_OK) {
     throw DdsError("no participant profile '" + profile + "' in " + qos_file_path());
   }
+  return qos;
+}
+
+Participant::Participant(int domain, const std::string& name, const std::optional<std::string>& security_dir)
+    : domain_(domain), secured_(security_dir.has_value()) {
+  const std::string profile = participant_profile();
+  fdds::DomainParticipantQos qos = participant_qos(profile);
+  auto* factory = fdds::DomainParticipantFactory::get_instance();
+  warnings_ = socket_buffer_shortfalls(qos, read_socket_buffer_limits());
   qos.name(name);
   if (security_dir) enable_security(qos, *security_dir, name);
   participant_ = factory->create_participant(domain, qos);
@@ -88,6 +100,10 @@ Participant::Participant(int domain, const std::string& name, const std::optiona
     factory->delete_participant(participant_);
     throw DdsError("cannot create a DDS publisher or subscriber");
   }
+}
+
+Participant open_participant(const ParticipantArgs& args, const std::string& name) {
+  return Participant(resolve_domain(args.domain), name, resolve_security_dir(args.security_dir));
 }
 
 Participant::~Participant() {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <fastdds/dds/domain/DomainParticipant.hpp>
+#include <fastdds/dds/domain/qos/DomainParticipantQos.hpp>
 #include <fastdds/dds/publisher/DataWriter.hpp>
 #include <fastdds/dds/publisher/Publisher.hpp>
 #include <fastdds/dds/subscriber/DataReader.hpp>
@@ -12,6 +13,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "dds/checked_type.hpp"
 
@@ -27,6 +29,12 @@ int resolve_domain(std::optional<int> from_command_line);
 
 // CLOUDSHAPE_QOS_FILE if set, else config/qos.xml of the sources (compiled in).
 std::string qos_file_path();
+
+// CLOUDSHAPE_DDS_PROFILE if set, else "cloudshape_localhost".
+std::string participant_profile();
+
+// The participant QoS of a profile of qos.xml (loaded first). Throws DdsError when absent.
+eprosima::fastdds::dds::DomainParticipantQos participant_qos(const std::string& profile);
 
 // Which endpoint QoS profile of qos.xml an endpoint uses.
 enum class Traffic { data, status };
@@ -45,6 +53,8 @@ class Participant {
 
   int domain() const { return domain_; }
   bool secured() const { return secured_; }
+  // What the owner should log as warnings: transport settings this machine does not honour.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   // Registers the type (once) and creates (or finds) the topic.
   template <class Spec>
@@ -64,9 +74,21 @@ class Participant {
 
   int domain_;
   bool secured_ = false;
+  std::vector<std::string> warnings_;
   eprosima::fastdds::dds::DomainParticipant* participant_ = nullptr;
   eprosima::fastdds::dds::Publisher* publisher_ = nullptr;
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
 };
+
+// What a program's command line says about its participant (dds/participant_cli.hpp adds the
+// options); unset fields fall back to the environment when the participant is opened.
+struct ParticipantArgs {
+  std::optional<int> domain;                // --domain
+  std::optional<std::string> security_dir;  // --security (empty: off even if the variable is set)
+};
+
+// The participant `name` on resolve_domain(args.domain), secured when
+// resolve_security_dir(args.security_dir) names a folder.
+Participant open_participant(const ParticipantArgs& args, const std::string& name);
 
 }  // namespace cloudshape::dds

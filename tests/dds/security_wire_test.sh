@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # DDS Security on the wire: one cloud through the five services over UDP on loopback (the
-# localhost profile without shared memory), captured with tcpdump, plain and then secured.
+# default localhost profile), captured with tcpdump, plain and then secured.
 # Plain, the capture holds the cloud's source name and the type name; secured, neither (the
 # payload and discovery are encrypted). Topic names may appear secured only inside the signed
 # permissions documents that the authentication handshake exchanges in clear by design.
@@ -23,10 +23,8 @@ cleanup() {
 }
 trap cleanup EXIT
 
-# The localhost participant profile minus its shared-memory transport: data goes over UDP.
-sed '/<participant profile_name="cloudshape_localhost">/,/<\/participant>/{/<transport_id>shm_large<\/transport_id>/d}' \
-  "$src/config/qos.xml" >"$work/qos_udp.xml"
-export CLOUDSHAPE_QOS_FILE="$work/qos_udp.xml"
+# The default profile carries the data over UDP on loopback, where tcpdump sees it.
+export CLOUDSHAPE_DDS_PROFILE=cloudshape_localhost
 "$src/tools/make-certs.sh" "$work/pki" 2>/dev/null
 marker=ZqxWireMarker
 "$bin/cloudshape-synth" shape --shape box --dims 30,20,10 --points 2000 --seed 5 -o "$work/$marker.pcd" >/dev/null
