@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
@@ -50,10 +51,6 @@ Eigen::Vector3d prism_side_normal(const synth::SolidSpec& spec, int k) {
   return world(spec, (v[k] + v[(k + 1) % 5]).normalized());
 }
 
-const pipeline::ObjectResult& only_object(const pipeline::RecognitionResult& r) {
-  EXPECT_EQ(r.objects.size(), 1u);
-  return r.objects.front();
-}
 
 double dimension(const pipeline::ObjectResult& o, const std::string& name) {
   for (const auto& [n, v] : o.dimensions)
@@ -75,6 +72,20 @@ struct Case {
 
 const Case kCases[] = {{1, 5000, 0.0}, {2, 20000, 0.0}, {3, 80000, 0.0}, {4, 20000, 0.002}};
 
+// The one object recognised in a view of `spec`, and where it came from for failure messages.
+struct Seen {
+  pipeline::ObjectResult object;
+  std::string trace;
+};
+
+Seen recognise_view(const synth::SolidSpec& spec, const Eigen::Vector3d& direction, const Case& c) {
+  const View view = view_from(spec, direction, c.points, c.noise, c.seed);
+  const auto r = pipeline::recognize_cloud(view.points, config::PipelineConfig{}, synth::to_string(spec.kind));
+  EXPECT_EQ(r.objects.size(), 1u);
+  return {r.objects.empty() ? pipeline::ObjectResult{} : r.objects.front(),
+          "seed " + std::to_string(c.seed) + ", " + std::to_string(view.points.size()) + " points"};
+}
+
 TEST(SingleViewPolyhedra, TetrahedronFromTwoOrThreeFaces) {
   for (const Case& c : kCases) {
     std::mt19937_64 rng(c.seed);
@@ -85,10 +96,9 @@ TEST(SingleViewPolyhedra, TetrahedronFromTwoOrThreeFaces) {
     const Eigen::Vector3d two = tetrahedron_face_normal(spec, 0) + tetrahedron_face_normal(spec, 1);
     const Eigen::Vector3d three = -tetrahedron_face_normal(spec, 3);
     for (const Eigen::Vector3d& direction : {two, three}) {
-      const View view = view_from(spec, direction, c.points, c.noise, c.seed);
-      const auto r = pipeline::recognize_cloud(view.points, config::PipelineConfig{}, "tetrahedron");
-      const auto& o = only_object(r);
-      SCOPED_TRACE("seed " + std::to_string(c.seed) + ", " + std::to_string(view.points.size()) + " points");
+      const Seen seen = recognise_view(spec, direction, c);
+      const pipeline::ObjectResult& o = seen.object;
+      SCOPED_TRACE(seen.trace);
       ASSERT_EQ(o.shape, "tetrahedron") << o.reason;
       EXPECT_TRUE(o.partial);
       EXPECT_NEAR(dimension(o, "edge"), edge, kDimensionTolerance * edge);
@@ -110,10 +120,9 @@ TEST(SingleViewPolyhedra, PentagonalPrismFromTwoOrThreeSides) {
     const Eigen::Vector3d two = prism_side_normal(spec, 0) + prism_side_normal(spec, 1);
     const Eigen::Vector3d three_and_cap = prism_side_normal(spec, 2) + 0.6 * axis;
     for (const Eigen::Vector3d& direction : {two, three_and_cap}) {
-      const View view = view_from(spec, direction, c.points, c.noise, c.seed);
-      const auto r = pipeline::recognize_cloud(view.points, config::PipelineConfig{}, "prism");
-      const auto& o = only_object(r);
-      SCOPED_TRACE("seed " + std::to_string(c.seed) + ", " + std::to_string(view.points.size()) + " points");
+      const Seen seen = recognise_view(spec, direction, c);
+      const pipeline::ObjectResult& o = seen.object;
+      SCOPED_TRACE(seen.trace);
       ASSERT_EQ(o.shape, "pentagonal_prism") << o.reason;
       EXPECT_TRUE(o.partial);
       EXPECT_NEAR(dimension(o, "side"), side, kDimensionTolerance * side);
