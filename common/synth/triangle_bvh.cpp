@@ -4,8 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numeric>
-#include <stdexcept>
-#include <string>
 
 namespace cloudshape::synth {
 
@@ -33,13 +31,9 @@ bool segment_meets_box(const Eigen::AlignedBox3d& box, const Eigen::Vector3d& or
 }  // namespace
 
 TriangleBvh::TriangleBvh(const PointList& vertices, const std::vector<Triangle>& triangles) {
+  check_triangle_indices(vertices, triangles);
   std::vector<Eigen::Vector3d> centroids;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
-    for (std::uint32_t index : triangles[t])
-      if (index >= vertices.size())
-        throw std::invalid_argument("triangle " + std::to_string(t) + " refers to vertex " +
-                                    std::to_string(index) + " but the mesh has only " +
-                                    std::to_string(vertices.size()) + " vertices");
     const Eigen::Vector3d& a = vertices[triangles[t][0]];
     const Eigen::Vector3d ab = vertices[triangles[t][1]] - a, ac = vertices[triangles[t][2]] - a;
     const double area = ab.cross(ac).norm();

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <stdexcept>
 
 namespace cloudshape::synth {
 namespace {
@@ -69,6 +70,16 @@ TEST_P(MeshVisibilityOcclusion, HidesExactlyWhatTheSolidCovers) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, MeshVisibilityOcclusion, ::testing::ValuesIn(scenes()),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Bad input: a triangle naming a missing vertex is refused.
+TEST(MeshVisibility, RejectsBadIndicesAndASingleTriangleHides) {
+  const PointList v{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+  EXPECT_THROW(MeshVisibility(v, {{0, 1, 4}}), std::invalid_argument);
+  // One triangle across the line of sight hides the point behind it, not the one beside it.
+  const MeshVisibility wall(v, {{0, 1, 3}});
+  EXPECT_TRUE(wall.visible({Vector3d(0.2, 0.2, -1)}, Vector3d(0.2, 0.2, 1)).empty());
+  EXPECT_EQ(wall.visible({Vector3d(0.8, 0.8, -1)}, Vector3d(0.8, 0.8, 1)).size(), 1u);
+}
 
 }  // namespace
 }  // namespace cloudshape::synth
