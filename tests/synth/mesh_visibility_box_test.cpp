@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cmath>
+#include <ostream>
 #include <random>
 
 namespace cloudshape::synth {
@@ -62,6 +63,9 @@ test::TriangleMesh box_mesh() {
   test::add_box(mesh, kBox, 8);
   return mesh;
 }
+
+// Names the case in test listings instead of dumping its bytes.
+void PrintTo(const View& c, std::ostream* os) { *os << c.name; }
 
 class MeshVisibilityBox : public ::testing::TestWithParam<View> {};
 

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <random>
 #include <stdexcept>
 
@@ -35,6 +36,9 @@ std::vector<Scene> scenes() {
       {"box_in_front_of_box_oblique", {front, back}, Vector3d(5, -4, 6), 0.02},
   };
 }
+
+// Names the case in test listings instead of dumping its bytes.
+void PrintTo(const Scene& c, std::ostream* os) { *os << c.name; }
 
 class MeshVisibilityOcclusion : public ::testing::TestWithParam<Scene> {};
 

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ std::vector<MeshView> views() {
       {"ravens_cube", "ravens/kitting_03_cube.obj", "10,-60,30", {20, 20, 20}, 0.2},
   };
 }
+
+// Names the case in test listings instead of dumping its bytes.
+void PrintTo(const MeshView& v, std::ostream* os) { *os << v.name; }
 
 class MeshViewCli : public ::testing::TestWithParam<MeshView> {};
 
