@@ -42,6 +42,7 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("structure_min_extent", c.structure_min_extent);
   f("structure_min_share", c.structure_min_share);
   f("structure_max_planes", c.structure_max_planes);
+  f("structure_min_total", c.structure_min_total);
   f("structure_normal_neighbours", c.structure_normal_neighbours);
   f("structure_normal_degrees", c.structure_normal_degrees);
   f("scene_object_max_extent", c.scene_object_max_extent);

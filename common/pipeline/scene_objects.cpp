@@ -96,23 +96,10 @@ bool is_scene_object(const PointList& part, const Structure& s, double diagonal,
   });
 }
 
-// Scene structure is relative: a component left over that is still too large to be an
-// object (ground that is not one plane over the whole scene, a building) is a scene of its own,
-// whose planes are structure against its own diagonal. The planes found go to all.planes.
-void collect_objects(const PointList& points, double scene_diagonal, double band, double cell,
-                     const config::PreprocessConfig& cfg, int depth, Structure& all, std::vector<PointList>& objects) {
-  constexpr int kMaxDepth = 3;
-  const double diagonal = geometry::bounding_box(points).diagonal();
-  const Structure s = find_structure(points, band, diagonal, cfg);
-  if (s.planes.empty()) return;
-  all.planes.insert(all.planes.end(), s.planes.begin(), s.planes.end());
-  for (PointList& part : connected_components(s.rest, cell)) {
-    if (is_scene_object(part, s, scene_diagonal, cfg))
-      objects.push_back(std::move(part));
-    else if (depth + 1 < kMaxDepth && part.size() >= 100 &&
-             geometry::bounding_box(part).diagonal() > cfg.scene_object_max_extent * scene_diagonal)
-      collect_objects(part, scene_diagonal, band, cell, cfg, depth + 1, all, objects);
-  }
+// Thinner than `thickness` (standard deviation along the least principal axis): a piece
+// of a plane (a wall's fragment, a strip of a curved solid cut by the band), not an object.
+bool is_flat(const PointList& points, double thickness) {
+  return std::sqrt(std::max(geometry::compute_pca(points).eigenvalues(0), 0.0)) < thickness;
 }
 
 struct CellKeyHash {
@@ -157,17 +144,23 @@ std::optional<std::vector<ObjectCloud>> scene_objects(const PointList& raw, cons
   const double diagonal = geometry::bounding_box(pre.points).diagonal();
   const double band = cfg.support_band * pre.resolution;
   const double cell = cfg.object_gap * pre.resolution;
-  Structure all;
-  std::vector<PointList> parts;
-  collect_objects(pre.points, diagonal, band, cell, cfg, 0, all, parts);
+  const Structure s = find_structure(pre.points, band, diagonal, cfg);
+  // A scene is mostly structure; a cloud of solids, one with a large face, is not.
+  if (s.planes.empty() || static_cast<double>(pre.points.size() - s.rest.size()) <
+                              cfg.structure_min_total * static_cast<double>(pre.points.size()))
+    return std::nullopt;
+  std::vector<PointList> parts = connected_components(s.rest, cell);
+  parts.erase(std::remove_if(parts.begin(), parts.end(),
+                             [&](const PointList& part) { return !is_scene_object(part, s, diagonal, cfg); }),
+              parts.end());
   if (parts.empty()) return std::nullopt;
   config::PreprocessConfig own = cfg;
   own.isolated_voxel_neighbours = 0;
   std::vector<ObjectCloud> objects;
-  for (const PointList& points : raw_points_of(raw, parts, all, cell, band)) {
+  for (const PointList& points : raw_points_of(raw, parts, s, cell, band)) {
     if (static_cast<std::int64_t>(points.size()) < cfg.scene_object_min_points) continue;
     PreprocessedCloud object = preprocess_cloud(points, own);
-    if (object.points.empty()) continue;
+    if (object.points.size() < 4 || is_flat(object.points, cfg.fragment_max_width * object.resolution)) continue;
     objects.push_back({std::move(object.points), object.resolution});
   }
   if (objects.empty()) return std::nullopt;

@@ -18,16 +18,19 @@ struct ObjectCloud {
   double resolution = 0.0;
 };
 
-// `pre` is `raw` preprocessed with `cfg`. Cuts away the structural planes of the scene (each
-// spanning cfg.structure_min_extent of its diagonal with cfg.structure_min_share of its points,
-// at most cfg.structure_max_planes); the components left over (cells of cfg.object_gap
-// resolutions) that span at most cfg.scene_object_max_extent of the diagonal and lie over a
-// structural plane reaching beyond them by cfg.scene_object_margin times their extent on three
-// of four sides are objects. Each object's raw points (those in or next to its cells, off every
-// structural plane) are preprocessed again without the isolated-voxel filter (they passed it at
-// the scene's scale; at the object's own, scan rings would look isolated). nullopt when the
-// cloud is no such scene: no structural plane, or no object among it with
-// cfg.scene_object_min_points raw points.
+// `pre` is `raw` preprocessed with `cfg`. Cuts away the structural planes of the scene: one
+// after the other, the plane through most points whose own (k-NN) normals agree with it, while
+// it spans cfg.structure_min_extent of the scene diagonal and holds cfg.structure_min_share of
+// the points (at most cfg.structure_max_planes); together they must hold
+// cfg.structure_min_total. The components left over (cells of cfg.object_gap resolutions)
+// that span at most cfg.scene_object_max_extent of the diagonal and lie over a structural
+// plane reaching beyond them by cfg.scene_object_margin times their extent on three of four
+// sides are objects. Each object's raw points (those in or next to its cells, off every
+// structural plane) are preprocessed again without the isolated-voxel filter (they passed it
+// at the scene's scale; at the object's own, scan rings would look isolated); an object with
+// fewer than cfg.scene_object_min_points raw points, or flat (thinner than
+// cfg.fragment_max_width of its own resolutions), is dropped. nullopt when the cloud is no
+// such scene.
 std::optional<std::vector<ObjectCloud>> scene_objects(const PointList& raw, const PreprocessedCloud& pre,
                                                       const config::PreprocessConfig& cfg);
 
