@@ -48,18 +48,8 @@ while (($#)); do
   shift
 done
 
-bin="$CLOUDSHAPE_BUILD_DIR/bin"
-work="$(mktemp -d)"
-export CLOUDSHAPE_LOG_DIR="$work/logs"
-launch="$CLOUDSHAPE_REPO/tools/launch.sh"
-echo_pid=""
-# shellcheck disable=SC2317  # called by the EXIT trap
-cleanup() {
-  [[ -z "$echo_pid" ]] || kill -TERM "$echo_pid" 2>/dev/null || true
-  "$launch" stop >/dev/null 2>&1 || true
-  rm -rf "$work"
-}
-trap cleanup EXIT
+# shellcheck source-path=SCRIPTDIR source=lib/pipeline_run.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib/pipeline_run.sh"
 if ((secure)); then
   "$CLOUDSHAPE_REPO/tools/make-certs.sh" "$work/pki" 2>/dev/null
   export CLOUDSHAPE_SECURITY_DIR="$work/pki"  # read by launch.sh, echo and inject
@@ -100,11 +90,8 @@ wait_for_results() {  # wait_for_results FIRST_ID N: until all came, or 30 s wit
   done
 }
 
-# One echo for the whole run, started before the services: they read input only once it
-# listens, so no result can be published before it is matched (results are VOLATILE).
-"$bin/cloudshape-echo" --domain "$domain" --timeout 7200 --latency >"$work/results.jsonl" 2>"$work/latency.txt" &
-echo_pid=$!
-"$launch" start --domain "$domain" >/dev/null 2>&1
+# One echo for the whole run.
+cs_start_pipeline "$domain" "$work/results.jsonl" "$work/latency.txt" --timeout 7200 --latency
 next_id=0
 
 if [[ -z "$rates" ]]; then

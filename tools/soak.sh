@@ -37,20 +37,8 @@ while (($#)); do
   shift
 done
 
-bin="$CLOUDSHAPE_BUILD_DIR/bin"
-work="$(mktemp -d)"
-export CLOUDSHAPE_LOG_DIR="$work/logs"
-launch="$CLOUDSHAPE_REPO/tools/launch.sh"
-echo_pid=""
-sampler_pid=""
-# shellcheck disable=SC2317  # called by the EXIT trap
-cleanup() {
-  [[ -z "$sampler_pid" ]] || kill "$sampler_pid" 2>/dev/null || true
-  [[ -z "$echo_pid" ]] || kill -TERM "$echo_pid" 2>/dev/null || true
-  "$launch" stop >/dev/null 2>&1 || true
-  rm -rf "$work"
-}
-trap cleanup EXIT
+# shellcheck source-path=SCRIPTDIR source=lib/pipeline_run.sh
+source "$(dirname "${BASH_SOURCE[0]}")/lib/pipeline_run.sh"
 
 # Four solids, so every stage does real work; distinct names, one per cloud sent.
 declare -A dims=([box]='30,20,10' [cylinder]='10,30' [sphere]='12' [cone]='10,25')
@@ -68,9 +56,7 @@ clouds() {  # $1 = phase, $2 = count: links named <phase>_<i>_<shape>.pcd
 }
 results_of() { grep -c "latency_ms.* $1_" "$work/latency.txt" || true; }
 
-"$bin/cloudshape-echo" --domain "$domain" --latency >/dev/null 2>"$work/latency.txt" &
-echo_pid=$!
-"$launch" start --domain "$domain" >/dev/null 2>&1
+cs_start_pipeline "$domain" /dev/null "$work/latency.txt" --latency
 
 # RSS of every service twice a second: "<phase> <seconds> <service> <kB>".
 phase_file="$work/phase"
@@ -86,7 +72,7 @@ sample_rss() {
   done
 }
 sample_rss >"$work/rss.txt" &
-sampler_pid=$!
+helper_pids+=($!)
 
 # Sends the clouds and waits for every result; prints the seconds from the first result to
 # the last (so the rate excludes start-up and filling the queues).

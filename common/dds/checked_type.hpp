@@ -5,7 +5,10 @@
 #pragma once
 
 #include <fastcdr/exceptions/Exception.h>
+#include <fastdds/rtps/common/SerializedPayload.h>
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <type_traits>
 
@@ -13,22 +16,46 @@
 
 namespace cloudshape::dds {
 
-// Replaces a sample that did not deserialize: a cloud message becomes one failed object of an
-// unknown cloud, so it still ends in one error result; a status sample is just emptied.
+// The cloud a message is about: the first two fields of every cloud message (its header's).
+struct CloudIdentity {
+  std::uint64_t cloud_id = 0;
+  std::string source;
+};
+
+// Reads only the cloud id and source from the start of a cloud message's CDR, so a sample
+// that fails further on still names its cloud; nullopt when even they do not decode.
+std::optional<CloudIdentity> read_cloud_identity(
+    const eprosima::fastrtps::rtps::SerializedPayload_t& payload);
+
+// Replaces a cloud message that did not deserialize by the one failed object of its cloud
+// (`identity`), so that cloud still ends in one error result; without an identity the cloud id
+// stays 0 and the error text says it could not be read.
 template <class Message>
-void mark_undecodable(Message& m, const std::string& problem) {
+void mark_undecodable(Message& m, const std::string& problem,
+                      const std::optional<CloudIdentity>& identity) {
   m = Message();
-  if constexpr (!std::is_same_v<Message, msg::ServiceStatus>) {
-    m.header().object_count(1);
-    m.header().error(true);
-    m.header().error_stage("receive");
-    m.header().error_text("the sample does not deserialize: " + problem);
+  msg::CloudHeader& h = m.header();
+  // One object whatever the sample said: the cloud's result must complete even if the object
+  // count was what the corruption hit.
+  h.object_count(1);
+  h.error(true);
+  h.error_stage("receive");
+  std::string text = "the sample does not deserialize: " + problem;
+  if (identity) {
+    h.cloud_id(identity->cloud_id);
+    h.source(identity->source);
+  } else {
+    text += "; its cloud id and source cannot be read either (cloud 0 stands for unknown)";
   }
+  h.error_text(text);
 }
 
 template <class Spec>
 class CheckedPubSubType : public Spec::PubSubType {
  public:
+  // True when the reader is to deliver the sample: it deserialized, or it is a cloud message that
+  // did not and is now its cloud's error sample. Fast DDS drops a sample whose deserialize
+  // returns false (its cloud would end in no result at all); a bad status sample is dropped so.
   bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override {
     std::string problem = "it ends too early";
     try {
@@ -36,8 +63,14 @@ class CheckedPubSubType : public Spec::PubSubType {
     } catch (const eprosima::fastcdr::exception::Exception& e) {
       problem = e.what();
     }
-    mark_undecodable(*static_cast<typename Spec::Message*>(data), problem);
-    return false;
+    using Message = typename Spec::Message;
+    if constexpr (std::is_same_v<Message, msg::ServiceStatus>) {
+      *static_cast<Message*>(data) = Message();  // nothing half-read, should it be delivered
+      return false;
+    } else {
+      mark_undecodable(*static_cast<Message*>(data), problem, read_cloud_identity(*payload));
+      return true;
+    }
   }
 };
 

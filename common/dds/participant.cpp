@@ -102,6 +102,10 @@ Participant::Participant(int domain, const std::string& name, const std::optiona
   }
 }
 
+Participant open_participant(const ParticipantArgs& args, const std::string& name) {
+  return Participant(resolve_domain(args.domain), name, resolve_security_dir(args.security_dir));
+}
+
 Participant::~Participant() {
   participant_->delete_contained_entities();
   fdds::DomainParticipantFactory::get_instance()->delete_participant(participant_);

@@ -80,4 +80,15 @@ class Participant {
   eprosima::fastdds::dds::Subscriber* subscriber_ = nullptr;
 };
 
+// What a program's command line says about its participant (dds/participant_cli.hpp adds the
+// options); unset fields fall back to the environment when the participant is opened.
+struct ParticipantArgs {
+  std::optional<int> domain;                // --domain
+  std::optional<std::string> security_dir;  // --security (empty: off even if the variable is set)
+};
+
+// The participant `name` on resolve_domain(args.domain), secured when
+// resolve_security_dir(args.security_dir) names a folder.
+Participant open_participant(const ParticipantArgs& args, const std::string& name);
+
 }  // namespace cloudshape::dds

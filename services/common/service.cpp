@@ -7,6 +7,8 @@
 #include <csignal>
 #include <cstdlib>
 
+#include "dds/participant_cli.hpp"
+
 namespace cloudshape::service {
 namespace {
 
@@ -20,14 +22,9 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
   Options opt;
   opt.name = name;
   CLI::App app{about, "cloudshape-" + name};
-  int domain = -1;
-  std::string security;
   bool verbose = false;
   app.add_option("--config", opt.config_path, "pipeline configuration (YAML); default: config/pipeline.yaml");
-  app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
-  app.add_option("--security", security,
-                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; "
-                 "empty: off)");
+  dds::add_participant_options(app, opt.participant_args);
   app.add_option("--lane", opt.lane, "this replica's lane, 0..lanes-1 (handles cloud_id % lanes == lane)");
   app.add_option("--lanes", opt.lanes, "number of replicas of this stage")->check(CLI::PositiveNumber);
   app.add_option("--subscribers", opt.subscribers,
@@ -45,8 +42,6 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
                  opt.lane, opt.lanes);
     std::exit(2);
   }
-  if (domain >= 0) opt.domain = domain;
-  if (app.count("--security") > 0) opt.security_dir = security;
   set_up_logging(opt, verbose);
   return opt;
 }

@@ -16,7 +16,7 @@
 
 #include "config/pipeline_config.hpp"
 #include "dds/endpoints.hpp"
-#include "dds/security.hpp"
+#include "dds/participant.hpp"
 #include "dds/topics.hpp"
 
 namespace cloudshape::service {
@@ -24,8 +24,7 @@ namespace cloudshape::service {
 struct Options {
   std::string name;            // stage name: ingest, planes, keypoints, classifier, solver
   std::string config_path;     // resolved pipeline.yaml, empty for built-in defaults
-  std::optional<int> domain;   // --domain
-  std::optional<std::string> security_dir;  // --security (empty: off even if the variable is set)
+  dds::ParticipantArgs participant_args;  // --domain, --security
   std::uint32_t lane = 0;      // this replica's lane
   std::uint32_t lanes = 1;     // replicas of this stage
   int subscribers = 1;         // downstream readers to wait for before reading input
@@ -105,8 +104,7 @@ int run(const Options& opt, const InSpec& in_spec, const OutSpec& out_spec,
   using In = typename InSpec::Message;
   using Out = typename OutSpec::Message;
   const std::atomic<bool>& stop = install_stop_flag();
-  dds::Participant participant(dds::resolve_domain(opt.domain), "cloudshape-" + opt.name,
-                               dds::resolve_security_dir(opt.security_dir));
+  dds::Participant participant = dds::open_participant(opt.participant_args, "cloudshape-" + opt.name);
   for (const std::string& w : participant.warnings()) spdlog::warn("{}", w);
   StatusReporter status(participant, opt);
   dds::Writer<OutSpec> writer(participant, out_spec);

@@ -1,7 +1,8 @@
 // Process-level: the five services receive raw-cloud samples that no file reader would make (NaN
 // points, a length that is not x y z triples, zero points, more points than input.max_points, a
-// sensor's object_count 0) and clouds with no solid in them; every one ends in exactly one result
-// line from cloudshape-echo that names the input (source) and the problem (reason).
+// sensor's object_count 0), clouds with no solid in them and a sample that does not deserialize;
+// every one ends in exactly one result line from cloudshape-echo that names the input (source,
+// and the cloud id) and the problem (reason).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,7 +12,9 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <sstream>
 
+#include "corrupt_sample.hpp"
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
 #include "dds/topics.hpp"
@@ -27,6 +30,11 @@ using ::testing::HasSubstr;
 
 constexpr int kDomain = 50;        // + CLOUDSHAPE_TEST_DOMAIN_OFFSET, as every DDS test
 constexpr int kMaxPoints = 5000;   // input.max_points of this test's configuration
+constexpr std::uint64_t kUndecodableId = 4242;  // the id of the sample that does not deserialize
+
+// The raw-cloud topic with a type that breaks every sample it writes (corrupt_sample.hpp).
+const dds::TopicSpec<msg::RawCloud, CorruptingPubSubType<msg::RawCloud, msg::RawCloudPubSubType>>
+    kCorruptRawCloud{dds::topics::raw_cloud.name};
 
 PointList solid_points(synth::ShapeKind kind, std::size_t n) {
   std::mt19937_64 rng(21);
@@ -69,12 +77,26 @@ std::vector<Sample> samples() {
   return s;
 }
 
+// Cloud id by source, from the latency lines of cloudshape-echo --latency:
+// "cloudshape-echo: latency_ms 12.3 cloud ID SOURCE received_ns NS".
+std::map<std::string, std::uint64_t> echoed_ids(const std::string& echo_log) {
+  std::map<std::string, std::uint64_t> ids;
+  std::istringstream lines(echo_log);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string tool, latency, ms, cloud, source;
+    std::uint64_t id = 0;
+    if (words >> tool >> latency >> ms >> cloud >> id >> source && latency == "latency_ms") ids[source] = id;
+  }
+  return ids;
+}
+
 TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
   Pipeline p("bad-samples", kDomain);
   const std::string config = p.dir() + "/pipeline.yaml";
   std::ofstream(config) << "input:\n  max_points: " << kMaxPoints << "\n";
   const std::vector<Sample> sent = samples();
-  p.start_echo(static_cast<int>(sent.size()));
+  p.start_echo(static_cast<int>(sent.size()) + 1, {"--latency"});
   for (const std::string& stage : kStages) p.start_service(stage, {"--config", config});
 
   {
@@ -92,11 +114,23 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
     }
     EXPECT_TRUE(writer.wait_for_acknowledgments(120s));
   }
+  {
+    // Another participant, so that the type name can stand for the corrupting type.
+    dds::Participant participant(std::stoi(p.domain()), "bad-samples-corrupt");
+    dds::Writer<decltype(kCorruptRawCloud)> writer(participant, kCorruptRawCloud);
+    ASSERT_TRUE(writer.wait_for_readers(1, kStartWait)) << "ingest did not come up";
+    msg::RawCloud m;
+    m.header().cloud_id(kUndecodableId);
+    m.header().source("undecodable");
+    m.xyz({1, 2, 3});
+    ASSERT_TRUE(writer.write(m));
+    EXPECT_TRUE(writer.wait_for_acknowledgments(120s));
+  }
   ASSERT_EQ(p.wait_echo(), 0) << "echo did not print one result per sample; its log:\n"
                               << read_text(p.log_path("echo"));
 
   const std::map<std::string, pipeline::RecognitionResult> results = by_source(p.echo_lines());
-  ASSERT_EQ(results.size(), sent.size());
+  ASSERT_EQ(results.size(), sent.size() + 1);
   const auto reason_of = [&](const std::string& source) {
     const pipeline::RecognitionResult& r = results.at(source);
     EXPECT_EQ(r.objects.size(), 1u) << source;
@@ -114,6 +148,12 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
   EXPECT_THAT(reason_of("repeated_point"), HasSubstr("all points coincide"));
   EXPECT_THAT(reason_of("collinear"), HasSubstr("collinear"));
   EXPECT_THAT(reason_of("coplanar"), HasSubstr("coplanar"));
+  // It names its cloud: id and source still read from the start of the broken sample.
+  EXPECT_THAT(reason_of("undecodable"), HasSubstr("receive: the sample does not deserialize"));
+  const std::map<std::string, std::uint64_t> ids = echoed_ids(read_text(p.log_path("echo")));
+  ASSERT_EQ(ids.count("undecodable"), 1u) << read_text(p.log_path("echo"));
+  EXPECT_EQ(ids.at("undecodable"), kUndecodableId);
+  EXPECT_EQ(ids.at("ten_values"), 2u);
   // Readable clouds: the NaN points are dropped, the sensor's object_count 0 is ignored.
   for (const char* source : {"some_nan", "object_count_zero"}) {
     const pipeline::RecognitionResult& r = results.at(source);

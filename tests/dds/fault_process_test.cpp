@@ -238,8 +238,8 @@ bool gdb_can_stop_processes() {
 // Like run_with_kills, but each victim dies inside the receive of a sample: the case that left
 // Fast DDS 2.9's shared-memory transport unable to reach the restarted process (README "No
 // lost clouds"). The default profile must recover from it as from any kill.
-// Clouds go in at `rate` Hz: slowly enough that inject still sends when the last victim is
-// stopped (a stage with nothing to receive cannot be caught in a receive).
+// Clouds go in at `rate` Hz for count / rate seconds: long enough that inject still sends when
+// the last victim is stopped (a stage with nothing to receive cannot be caught in a receive).
 void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& rate,
                                    const std::vector<std::string>& victims) {
   if (!gdb_can_stop_processes()) GTEST_SKIP() << "gdb cannot stop processes here (missing, or ptrace refused)";
@@ -249,7 +249,9 @@ void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& 
   for (const std::string& s : kStages) rig.start(s);
   rig.start_inject(files, rate);
   for (std::size_t k = 0; k < victims.size(); ++k) {
-    const std::size_t due = static_cast<std::size_t>(count) * (k + 1) / (victims.size() + 2);
+    // All kills in the first half of the results: each recovery costs about a lease (4 s),
+    // and the last victim must still have samples coming when gdb waits for one.
+    const std::size_t due = static_cast<std::size_t>(count) * (k + 1) / (2 * victims.size() + 2);
     ASSERT_TRUE(rig.wait_results(due, 120s)) << "stalled before killing " << victims[k] << "; inject:\n"
                                              << rig.inject_log();
     const std::string gdb = rig.kill9_inside_receive_and_restart(victims[k], 500ms);
@@ -265,7 +267,7 @@ void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& 
 // shared-memory pipeline (the solver).
 TEST(DdsFaults, KilledInsideAReceiveLosesNoCloud) {
   FaultRig rig("kill-receive", 70);
-  run_with_kills_inside_receive(rig, 60, "10", {"ingest", "solver"});
+  run_with_kills_inside_receive(rig, 120, "10", {"ingest", "solver"});
 }
 
 // Each of the five services killed inside a receive, 200 clouds at 10 Hz.

@@ -5,12 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <random>
 
 #include <fastcdr/exceptions/BadParamException.h>
-#include <fastdds/rtps/common/SerializedPayload.h>
 
+#include "corrupt_sample.hpp"
 #include "dds/checked_type.hpp"
 #include "dds/convert.hpp"
 #include "dds/ingest_sample.hpp"
@@ -22,6 +23,9 @@
 namespace cloudshape::dds {
 namespace {
 using ::testing::HasSubstr;
+using ::testing::Not;
+namespace corrupt = cloudshape::testing;
+using corrupt::SerializedPayload_t;
 
 PointList box_points(std::size_t n) {
   std::mt19937_64 rng(7);
@@ -145,28 +149,99 @@ TEST(IngestSample, ARefusedCloudBecomesOneFailedObject) {
   EXPECT_EQ(f.header().source(), "scan.pcd");
 }
 
-TEST(IngestSample, AnUndecodableSampleBecomesOneFailedCloudInsteadOfAnException) {
+TEST(IngestSample, AnUndecodableSampleBecomesOneFailedObjectOfItsCloudInsteadOfAnException) {
   // Found by fuzz_ingest: a CDR boolean byte that is neither 0 nor 1 makes Fast CDR throw out of
   // the generated type's deserialize, i.e. out of DataReader::take in the service.
-  msg::RawCloud sent = raw({1, 2, 3});
-  sent.header().source("");
-  msg::RawCloudPubSubType bare;
-  eprosima::fastrtps::rtps::SerializedPayload_t payload(bare.m_typeSize + 64);
-  ASSERT_TRUE(bare.serialize(&sent, &payload));
-  // 4 encapsulation + cloud_id 8 + empty source 5 (+3 padding) + 2 x 4 object fields +
-  // inject_time 8 + 5 timings x 8: the error flag is byte 76.
-  ASSERT_EQ(payload.data[76], 0);
-  payload.data[76] = 2;
+  const msg::RawCloud sent = raw({1, 2, 3}, 4);
+  const auto payload = corrupt::serialized<msg::RawCloudPubSubType>(sent);
+  ASSERT_EQ(payload->data[corrupt::error_flag_byte<msg::RawCloudPubSubType>(sent)], 0);
+  corrupt::break_error_flag<msg::RawCloudPubSubType>(sent, *payload);
 
   msg::RawCloud received;
-  EXPECT_THROW(bare.deserialize(&payload, &received), eprosima::fastcdr::exception::BadParamException);
+  msg::RawCloudPubSubType bare;
+  EXPECT_THROW(bare.deserialize(payload.get(), &received),
+               eprosima::fastcdr::exception::BadParamException);
   CheckedPubSubType<decltype(topics::raw_cloud)> checked;
   received.xyz({9, 9, 9});  // left over from an earlier sample: must not survive
-  EXPECT_FALSE(checked.deserialize(&payload, &received));
+  // Delivered (true), as its cloud's error sample: Fast DDS drops a sample refused with false.
+  EXPECT_TRUE(checked.deserialize(payload.get(), &received));
   EXPECT_TRUE(received.header().error());
-  EXPECT_EQ(received.header().object_count(), 1u);
+  EXPECT_EQ(received.header().error_stage(), "receive");
+  EXPECT_EQ(received.header().object_count(), 1u);  // one error result completes the cloud
   EXPECT_THAT(received.header().error_text(), HasSubstr("does not deserialize"));
+  EXPECT_THAT(received.header().error_text(), Not(HasSubstr("cannot be read")));
   EXPECT_TRUE(received.xyz().empty());
+  // The cloud id and source at the start still decode: the error result names the cloud.
+  EXPECT_EQ(received.header().cloud_id(), 17u);
+  EXPECT_EQ(received.header().source(), "scan.pcd");
+}
+
+// Every cloud topic's message starts with its header, so every one keeps its cloud's identity.
+template <class Spec>
+void expect_undecodable_sample_keeps_its_cloud(const Spec& spec) {
+  using Message = typename Spec::Message;
+  Message sent;
+  sent.header().cloud_id(0xFEEDFACE12ull);
+  sent.header().source("cloud of " + std::string(spec.name));
+  sent.header().object_index(2);
+  sent.header().object_count(3);
+  const auto payload = corrupt::serialized<typename Spec::PubSubType>(sent);
+  corrupt::break_error_flag<typename Spec::PubSubType>(sent, *payload);
+  Message received;
+  CheckedPubSubType<Spec> checked;
+  EXPECT_TRUE(checked.deserialize(payload.get(), &received)) << spec.name;
+  EXPECT_TRUE(received.header().error()) << spec.name;
+  EXPECT_EQ(received.header().cloud_id(), 0xFEEDFACE12ull) << spec.name;
+  EXPECT_EQ(received.header().source(), sent.header().source()) << spec.name;
+  EXPECT_EQ(received.header().object_index(), 0u) << spec.name;
+  EXPECT_EQ(received.header().object_count(), 1u) << spec.name;
+}
+
+TEST(IngestSample, EveryCloudTopicKeepsTheCloudIdOfAnUndecodableSample) {
+  expect_undecodable_sample_keeps_its_cloud(topics::raw_cloud);
+  expect_undecodable_sample_keeps_its_cloud(topics::filtered_cloud);
+  expect_undecodable_sample_keeps_its_cloud(topics::planes);
+  expect_undecodable_sample_keeps_its_cloud(topics::keypoints);
+  expect_undecodable_sample_keeps_its_cloud(topics::classified);
+  expect_undecodable_sample_keeps_its_cloud(topics::result);
+}
+
+TEST(IngestSample, AnUndecodableSampleWhoseCloudIdDoesNotReadSaysSo) {
+  const msg::RawCloud sent = raw({1, 2, 3});
+  // 4 bytes of encapsulation, then the 8-byte cloud id, then source ("scan.pcd": 4 + 9 bytes).
+  const std::vector<std::pair<std::string, std::function<void(SerializedPayload_t&)>>> damages = {
+      {"cut in the id", [](SerializedPayload_t& p) { p.length = 4 + 5; }},
+      {"cut in the source", [](SerializedPayload_t& p) { p.length = 4 + 8 + 4 + 3; }},
+      {"unknown encapsulation", [](SerializedPayload_t& p) { p.data[1] = 0x7F; }},
+  };
+  for (const auto& [what, damage] : damages) {
+    const auto payload = corrupt::serialized<msg::RawCloudPubSubType>(sent);
+    damage(*payload);
+    msg::RawCloud received;
+    received.header().cloud_id(99);  // left over from an earlier sample: must not survive
+    received.header().source("earlier.pcd");
+    CheckedPubSubType<decltype(topics::raw_cloud)> checked;
+    EXPECT_TRUE(checked.deserialize(payload.get(), &received)) << what;
+    EXPECT_TRUE(received.header().error()) << what;
+    EXPECT_EQ(received.header().cloud_id(), 0u) << what;
+    EXPECT_EQ(received.header().source(), "") << what;
+    EXPECT_EQ(received.header().object_count(), 1u) << what;
+    EXPECT_THAT(received.header().error_text(), HasSubstr("does not deserialize")) << what;
+    EXPECT_THAT(received.header().error_text(), HasSubstr("cloud id and source cannot be read"))
+        << what;
+  }
+}
+
+TEST(IngestSample, AnUndecodableStatusSampleIsDropped) {
+  msg::ServiceStatus sent;
+  sent.service("ingest");
+  const auto payload = corrupt::serialized<msg::ServiceStatusPubSubType>(sent);
+  payload->length = 4 + 3;  // cut in the service name's length
+  msg::ServiceStatus received;
+  received.service("planes");  // left over from an earlier sample
+  CheckedPubSubType<decltype(topics::status)> checked;
+  EXPECT_FALSE(checked.deserialize(payload.get(), &received));
+  EXPECT_EQ(received.service(), "");
 }
 
 }  // namespace

@@ -44,10 +44,11 @@ void Pipeline::start_service(const std::string& stage, std::vector<std::string> 
   services_.emplace_back(stage + tag, procs_.start(argv, log, log));
 }
 
-void Pipeline::start_echo(int count) {
+void Pipeline::start_echo(int count, const std::vector<std::string>& extra) {
   std::vector<std::string> argv = {kBin + "/cloudshape-echo", "--domain", domain(), "--count",
                                    std::to_string(count), "--timeout", std::to_string(kEchoTimeoutS)};
   argv.insert(argv.end(), common_args_.begin(), common_args_.end());
+  argv.insert(argv.end(), extra.begin(), extra.end());
   echo_ = procs_.start(argv, dir_ + "/echo.jsonl", log_path("echo"));
 }
 

@@ -43,7 +43,7 @@ class Pipeline {
   void add_common_args(const std::vector<std::string>& args);
 
   void start_service(const std::string& stage, std::vector<std::string> extra = {}, const std::string& tag = "");
-  void start_echo(int count);
+  void start_echo(int count, const std::vector<std::string>& extra = {});
   ProcessResult inject(const std::vector<std::string>& files);
 
   // Another program (stdout to dir/out_name, stderr to its log).

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dds/endpoints.hpp"
+#include "dds/participant_cli.hpp"
 #include "dds/topics.hpp"
 
 namespace {
@@ -87,18 +88,18 @@ int subscribe(cs::dds::Participant& participant, int count) {
 int main(int argc, char** argv) {
   CLI::App app{"One raw-cloud hop between two processes: latency and where it goes.", "cloudshape-bench-hop"};
   std::string role;
-  int domain = -1, count = 50;
+  std::optional<int> domain;
+  int count = 50;
   std::size_t points = 100000;
   double rate = 5;
   app.add_option("role", role, "pub or sub")->required()->check(CLI::IsMember({"pub", "sub"}));
-  app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
+  cs::dds::add_domain_option(app, domain);
   app.add_option("--count", count, "clouds to send / take");
   app.add_option("--points", points, "points per cloud (pub)");
   app.add_option("--rate", rate, "clouds per second (pub)");
   CLI11_PARSE(app, argc, argv);
   try {
-    cs::dds::Participant participant(
-        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), "cloudshape-bench-hop");
+    cs::dds::Participant participant(cs::dds::resolve_domain(domain), "cloudshape-bench-hop");
     return role == "pub" ? publish(participant, count, points, rate) : subscribe(participant, count);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cloudshape-bench-hop: %s\n", e.what());

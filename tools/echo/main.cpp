@@ -12,7 +12,7 @@
 
 #include "dds/convert.hpp"
 #include "dds/endpoints.hpp"
-#include "dds/security.hpp"
+#include "dds/participant_cli.hpp"
 #include "dds/result_joiner.hpp"
 #include "dds/topics.hpp"
 #include "report/result_json.hpp"
@@ -69,15 +69,12 @@ int echo(cs::dds::Participant& participant, const Spec& spec, cs::dds::Traffic t
 
 int main(int argc, char** argv) {
   CLI::App app{"Prints the cloudshape shape results (one JSON line each) or the services' status.", kTool};
-  int domain = -1;
-  std::string security;
+  cs::dds::ParticipantArgs participant_args;
   long count = 0;
   double timeout_s = 0;
   bool status = false;
   bool latency = false;
-  app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
-  app.add_option("--security", security,
-                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
+  cs::dds::add_participant_options(app, participant_args);
   app.add_option("--count", count, "exit after this many samples (exit 1 if --timeout comes first)");
   app.add_option("--timeout", timeout_s, "exit after this many seconds");
   app.add_flag("--status", status, "print the services' status samples instead of results");
@@ -90,10 +87,7 @@ int main(int argc, char** argv) {
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
   try {
-    cs::dds::Participant participant(
-        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
-        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
-                                                                  : std::nullopt));
+    cs::dds::Participant participant = cs::dds::open_participant(participant_args, kTool);
     for (const std::string& w : participant.warnings()) std::fprintf(stderr, "%s: warning: %s\n", kTool, w.c_str());
     if (status) {
       return echo(participant, cs::dds::topics::status, cs::dds::Traffic::status, count, timeout_s,

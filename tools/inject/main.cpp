@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "dds/security.hpp"
+#include "dds/participant_cli.hpp"
 #include "delivery.hpp"
 
 namespace {
@@ -63,8 +63,7 @@ std::int64_t now_ns() {
 
 int main(int argc, char** argv) {
   CLI::App app{"Publishes point-cloud files on the cloudshape raw-cloud topic.", kTool};
-  int domain = -1;
-  std::string security;
+  cs::dds::ParticipantArgs participant_args;
   double rate = 0.0;
   bool loop = false;
   double wait_s = 60.0;
@@ -72,9 +71,7 @@ int main(int argc, char** argv) {
   std::size_t count = 0;
   cs::inject::DeliverySettings delivery_settings;
   std::vector<std::string> args;
-  app.add_option("--domain", domain, "DDS domain id (default: CLOUDSHAPE_DOMAIN, else 0)");
-  app.add_option("--security", security,
-                 "DDS Security folder made by tools/make-certs.sh (default: CLOUDSHAPE_SECURITY_DIR; empty: off)");
+  cs::dds::add_participant_options(app, participant_args);
   app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--count", count, "send this many clouds in all, going round the files (e.g. a steady-rate run)");
@@ -101,10 +98,7 @@ int main(int argc, char** argv) {
 
   const std::vector<std::string> files = expand(args);
   try {
-    cs::dds::Participant participant(
-        cs::dds::resolve_domain(domain >= 0 ? std::optional<int>(domain) : std::nullopt), kTool,
-        cs::dds::resolve_security_dir(app.count("--security") > 0 ? std::optional<std::string>(security)
-                                                                  : std::nullopt));
+    cs::dds::Participant participant = cs::dds::open_participant(participant_args, kTool);
     for (const std::string& w : participant.warnings()) say("warning: " + w);
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),

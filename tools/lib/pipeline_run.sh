@@ -1,0 +1,35 @@
+# Shared by tools/bench_dds.sh and tools/soak.sh (source it after lib/deps.sh, don't run it):
+# a scratch folder, cloudshape-echo and the five services on one domain, and their clean-up.
+# Sets: bin (build/bin), work (the scratch folder, removed on exit; the services log to
+# $work/logs), launch (tools/launch.sh), echo_pid, helper_pids (add the script's own
+# background processes; they are ended first).
+# shellcheck shell=bash
+# shellcheck disable=SC2034  # bin, work, launch: read by the scripts that source this
+
+bin="$CLOUDSHAPE_BUILD_DIR/bin"
+work="$(mktemp -d)"
+export CLOUDSHAPE_LOG_DIR="$work/logs"
+launch="$CLOUDSHAPE_REPO/tools/launch.sh"
+echo_pid=""
+helper_pids=()
+
+# shellcheck disable=SC2317  # called by the EXIT trap
+cs_pipeline_cleanup() {
+  local pid
+  for pid in "${helper_pids[@]}"; do kill "$pid" 2>/dev/null || true; done
+  [[ -z "$echo_pid" ]] || kill -TERM "$echo_pid" 2>/dev/null || true
+  "$launch" stop >/dev/null 2>&1 || true
+  rm -rf "$work"
+}
+trap cs_pipeline_cleanup EXIT
+
+# cs_start_pipeline DOMAIN OUT ERR [ECHO OPTION...]: cloudshape-echo in the background (stdout
+# to OUT, stderr to ERR), then the five services. Echo comes first: the services read input
+# only once it listens, so no result is published before it is matched (results are VOLATILE).
+cs_start_pipeline() {
+  local domain="$1" out="$2" err="$3"
+  shift 3
+  "$bin/cloudshape-echo" --domain "$domain" "$@" >"$out" 2>"$err" &
+  echo_pid=$!
+  "$launch" start --domain "$domain" >/dev/null 2>&1
+}
