@@ -12,7 +12,7 @@ namespace {
 // distance and three median residuals, until that set stops changing. The rounds run on about
 // kTrimSample points (a fit over every point costs milliseconds, and every cloud is tried as
 // a sphere). A clean sphere keeps all its points and so its first, full fit.
-constexpr std::size_t kTrimSample = 2000;
+constexpr std::size_t kTrimSample = 1000;
 
 std::vector<std::uint32_t> within(const PointList& points, const geometry::SphereFit& fit, double limit) {
   std::vector<std::uint32_t> kept;
