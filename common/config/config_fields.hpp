@@ -108,6 +108,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
   f("closer_fit_margin", c.closer_fit_margin);
+  f("polyhedron_face_share", c.polyhedron_face_share);
+  f("min_side_span", c.min_side_span);
 }
 
 // Calls f(section_name, section_struct) for every stage section.

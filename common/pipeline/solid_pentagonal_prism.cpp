@@ -1,88 +1,224 @@
+// Regular pentagonal prism from the faces seen: two side faces meeting at 108 deg (normals
+// 72 or 144 deg apart) fix its axis and the pentagon's turn; seen sides, and the points
+// where they end against hidden sides, fix the pentagon; caps or the points' ends the height.
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
+#include <limits>
+#include <tuple>
 
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
+
 constexpr double kPi = 3.14159265358979323846;
+constexpr double kSideStep = 2.0 * kPi / 5.0;  // 72 deg between neighbouring side normals
+
+struct PrismFaces {
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  std::vector<const DetectedPlane*> sides;
+  std::vector<const DetectedPlane*> caps;
+  std::size_t points = 0;
+};
+
+// Angle between two unit vectors as a multiple of 72 deg: 1 or 2 for two sides of a
+// pentagonal prism, with `tolerance` radians of slack; 0 otherwise.
+int side_steps(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tolerance) {
+  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  for (int k = 1; k <= 2; ++k)
+    if (std::abs(angle - k * kSideStep) <= tolerance) return k;
+  return 0;
 }
 
-std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
-  const auto faces = detail::faces_by_size(in.planes);
-  if (faces.size() < 4) return std::nullopt;
-  const double sin_perp = std::sin(in.cfg.perpendicular_degrees * kPi / 180.0);
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
-
-  // The caps: the face whose normal is perpendicular to the most other faces.
-  const DetectedPlane* cap = nullptr;
-  std::vector<const DetectedPlane*> sides;
-  for (const DetectedPlane* candidate : faces) {
-    std::vector<const DetectedPlane*> perpendicular;
-    for (const DetectedPlane* f : faces)
-      if (std::abs(f->plane.normal.dot(candidate->plane.normal)) < sin_perp) perpendicular.push_back(f);
-    if (perpendicular.size() > sides.size()) {
-      sides = perpendicular;
-      cap = candidate;
+// The faces around the axis that two faces at a side angle define, best pair by points:
+// sides perpendicular to it at multiples of 72 deg from the pair, caps along it.
+std::optional<PrismFaces> prism_faces(const std::vector<const DetectedPlane*>& faces,
+                                      const config::SolveConfig& cfg) {
+  const double tolerance = cfg.parallel_degrees * kPi / 180.0;
+  const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
+  const double cos_parallel = std::cos(cfg.parallel_degrees * kPi / 180.0);
+  std::optional<PrismFaces> best;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    for (std::size_t j = i + 1; j < faces.size(); ++j) {
+      const Eigen::Vector3d& ni = faces[i]->plane.normal;
+      if (side_steps(ni, faces[j]->plane.normal, tolerance) == 0) continue;
+      PrismFaces set;
+      set.axis = ni.cross(faces[j]->plane.normal).normalized();
+      for (const DetectedPlane* f : faces) {
+        const Eigen::Vector3d& n = f->plane.normal;
+        const double along = std::abs(n.dot(set.axis));
+        const bool side = along < sin_perp && (f == faces[i] || side_steps(ni, n, tolerance) > 0);
+        if (side) set.sides.push_back(f);
+        if (along > cos_parallel) set.caps.push_back(f);
+        if (side || along > cos_parallel) set.points += f->inliers.size();
+      }
+      if (!best || set.points > best->points) best = set;
     }
   }
-  if (!cap || sides.size() < 3) return std::nullopt;
-  const Eigen::Vector3d axis = cap->plane.normal;
+  return best;
+}
+
+// Least-squares axis: perpendicular to every side normal, along every cap normal.
+Eigen::Vector3d refine_axis(const PrismFaces& set) {
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (const DetectedPlane* f : set.sides)
+    m.noalias() += static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
+  for (const DetectedPlane* f : set.caps)
+    m.noalias() -= static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
+  Eigen::Vector3d axis = solver.eigenvectors().col(0).normalized();
+  return axis.dot(set.axis) < 0 ? Eigen::Vector3d(-axis) : axis;
+}
+
+// Width of a face's points along `across`, between their 2nd and 98th percentiles.
+double side_span(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& across) {
+  std::vector<double> t;
+  t.reserve(face.inliers.size());
+  for (std::uint32_t i : face.inliers) t.push_back(cloud[i].dot(across));
+  if (t.size() < 2) return 0.0;
+  const auto at = [&t](double q) {
+    const auto k = static_cast<std::size_t>(q * static_cast<double>(t.size() - 1));
+    std::nth_element(t.begin(), t.begin() + k, t.end());
+    return t[k];
+  };
+  const double lo = at(0.02);
+  return at(0.98) - lo;
+}
+
+// Points of the planes (faces or not) whose normals are perpendicular to the axis.
+std::size_t points_around(const PlaneSegmentation& planes, const Eigen::Vector3d& axis,
+                          const config::SolveConfig& cfg) {
+  const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
+  std::size_t n = 0;
+  for (const DetectedPlane& p : planes.planes)
+    if (std::abs(p.plane.normal.dot(axis)) < sin_perp) n += p.inliers.size();
+  return n;
+}
+
+}  // namespace
+
+std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
+  const auto found = prism_faces(detail::faces_by_size(in.planes), in.cfg);
+  if (!found) return std::nullopt;
+  const Eigen::Vector3d axis = refine_axis(*found);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
 
-  // Every side face sits at the same distance a (the apothem) from the axis: solve
-  // n_k.(o + s u + t v) + d_k + a = 0 for the axis position (s, t) and a.
-  const Point origin = in.cloud[cap->inliers.front()];
-  Eigen::MatrixXd m(sides.size(), 3);
-  Eigen::VectorXd rhs(sides.size());
+  // The pentagon's turn: side normals are 72 deg apart, so 5 phi is the same for all.
   std::complex<double> orientation = 0.0;
-  for (std::size_t k = 0; k < sides.size(); ++k) {
-    const geometry::Plane& p = sides[k]->plane;
-    m(k, 0) = p.normal.dot(u);
-    m(k, 1) = p.normal.dot(v);
-    m(k, 2) = 1.0;
-    rhs(k) = -(p.normal.dot(origin) + p.offset);
-    const double phi = std::atan2(p.normal.dot(v), p.normal.dot(u));
-    orientation += static_cast<double>(sides[k]->inliers.size()) * std::polar(1.0, 5.0 * phi);
+  for (const DetectedPlane* f : found->sides) {
+    const double phi = std::atan2(f->plane.normal.dot(v), f->plane.normal.dot(u));
+    orientation += static_cast<double>(f->inliers.size()) * std::polar(1.0, 5.0 * phi);
+  }
+  const double phi0 = std::arg(orientation) / 5.0;
+  std::array<Eigen::Vector3d, 5> normals;
+  for (int k = 0; k < 5; ++k)
+    normals[k] = std::cos(phi0 + k * kSideStep) * u + std::sin(phi0 + k * kSideStep) * v;
+  // The prism must account for the points, and its sides for the planes around its axis:
+  // tangent strips of a curved side lie around the axis at every angle, not at 72 deg steps.
+  const std::vector<Eigen::Vector3d> side_normals(normals.begin(), normals.end());
+  const auto on_sides = detail::points_on_planes_along(in.planes, side_normals, in.cfg.parallel_degrees);
+  const auto on_caps = detail::points_on_planes_along(in.planes, {axis, -axis}, in.cfg.parallel_degrees);
+  if (static_cast<double>(on_sides + on_caps) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()) ||
+      static_cast<double>(on_sides) < in.cfg.polyhedron_face_share * static_cast<double>(points_around(in.planes, axis, in.cfg)))
+    return std::nullopt;
+
+  // Where each side's plane lies along its normal: a seen side where its points are; a
+  // hidden side next to a seen one where the points end, at their shared edge (the seen
+  // side is whole up to it). A side next to none touches the points at most at a corner
+  // (or along a cap's edge, which a partly hidden cap does not show): it stays free.
+  std::array<double, 5> offset{}, weight{};
+  std::array<bool, 5> seen{}, known{};
+  std::array<const DetectedPlane*, 5> seen_face{};
+  for (const DetectedPlane* f : found->sides) {
+    const double phi = std::atan2(f->plane.normal.dot(v), f->plane.normal.dot(u));
+    const int k = static_cast<int>(std::lround((phi - phi0) / kSideStep) % 5 + 5) % 5;
+    if (seen[k]) continue;
+    seen[k] = known[k] = true;
+    seen_face[k] = f;
+    offset[k] = detail::face_position(in.cloud, *f, normals[k]);
+    weight[k] = std::sqrt(static_cast<double>(f->inliers.size()));
+  }
+  for (int k = 0; k < 5; ++k) {
+    if (seen[k]) continue;
+    if (seen[(k + 1) % 5] || seen[(k + 4) % 5]) {
+      known[k] = true;
+      offset[k] = detail::open_end_support(in, normals[k]);
+      weight[k] = 1.0;
+    }
+  }
+  // Every side sits at the apothem a from the axis: n_k.(o + s u + t v) = offset_k - a.
+  // A seen side's position is the mean of many points, a hidden one's the end of a few:
+  // rows weighted by the square root of the points behind them (their precision).
+  const Point origin = found->sides.front()->plane.project(in.cloud[found->sides.front()->inliers.front()]);
+  std::vector<int> rows;
+  for (int k = 0; k < 5; ++k)
+    if (known[k]) rows.push_back(k);
+  if (rows.size() < 3) return std::nullopt;
+  Eigen::MatrixXd m(rows.size(), 3);
+  Eigen::VectorXd rhs(rows.size());
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const Eigen::Vector3d& n = normals[rows[r]];
+    const double w = weight[rows[r]];
+    m(r, 0) = w * n.dot(u);
+    m(r, 1) = w * n.dot(v);
+    m(r, 2) = w;
+    rhs(r) = w * (offset[rows[r]] - n.dot(origin));
   }
   const Eigen::Vector3d sol = m.colPivHouseholderQr().solve(rhs);
   const double apothem = sol(2);
   if (!(apothem > 0.0) || !sol.allFinite()) return std::nullopt;
   const Point on_axis = origin + sol(0) * u + sol(1) * v;
 
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Point& p : in.cloud) {
-    lo = std::min(lo, (p - on_axis).dot(axis));
-    hi = std::max(hi, (p - on_axis).dot(axis));
+  // Height: a cap where one is seen, else where the points end along the axis.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double cap_lo = nan, cap_hi = nan;
+  for (const DetectedPlane* f : found->caps) {  // largest first: noise may split a cap
+    double& cap = f->plane.normal.dot(axis) > 0 ? cap_hi : cap_lo;
+    if (std::isnan(cap)) cap = detail::face_position(in.cloud, *f, axis);
   }
-  for (const DetectedPlane* f : faces) {
-    const double c = f->plane.normal.dot(axis);
-    if (std::abs(c) < cos_parallel) continue;
-    const double pos = detail::face_position(in.cloud, *f, axis) - on_axis.dot(axis);
-    if (c > 0) hi = pos;
-    else lo = pos;
+  double lo = 0.0, hi = 0.0;
+  if (std::isnan(cap_lo) || std::isnan(cap_hi)) {
+    double min_t = std::numeric_limits<double>::infinity(), max_t = -min_t;
+    for (const Point& p : in.cloud) {
+      min_t = std::min(min_t, p.dot(axis));
+      max_t = std::max(max_t, p.dot(axis));
+    }
+    const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
+    std::tie(lo, hi) = detail::slab_median_extent(in.cloud, axis, slab, nan, nan, in.cfg.open_end_quantile);
   }
+  if (!std::isnan(cap_lo)) lo = cap_lo;
+  if (!std::isnan(cap_hi)) hi = cap_hi;
+  lo -= on_axis.dot(axis);
+  hi -= on_axis.dot(axis);
   const double height = hi - lo;
-  const double phi0 = std::arg(orientation) / 5.0;
+  if (!(height > 0.0)) return std::nullopt;
+  // A seen side is seen whole, across its width: a strip of a curved surface is narrow.
+  // Near each edge a side's plane may lose a band (the verification's tolerance) of its
+  // points to the neighbouring side.
+  const double side = 2.0 * apothem * std::tan(kPi / 5.0);
+  const double edge_band = in.cfg.inlier_distance * in.resolution;
+  for (int k = 0; k < 5; ++k)
+    if (seen_face[k] && side_span(in.cloud, *seen_face[k], axis.cross(normals[k])) + 2.0 * edge_band <
+                            in.cfg.min_side_span * side)
+      return std::nullopt;
 
   FittedSolid out;
   out.shape = Shape::pentagonal_prism;
-  out.dimensions = {{"side", 2.0 * apothem * std::tan(kPi / 5.0)}, {"height", height}};
+  out.dimensions = {{"side", side}, {"height", height}};
   out.center = on_axis + 0.5 * (lo + hi) * axis;
-  const Eigen::Vector3d first_normal = std::cos(phi0) * u + std::sin(phi0) * v;
   out.axes.row(0) = axis.transpose();
-  out.axes.row(1) = first_normal.transpose();
-  out.axes.row(2) = axis.cross(first_normal).transpose();
+  out.axes.row(1) = normals[0].transpose();
+  out.axes.row(2) = axis.cross(normals[0]).transpose();
   const Point c = out.center;
-  out.signed_distance = [c, axis, u, v, phi0, apothem, height](const Point& p) {
+  out.signed_distance = [c, axis, normals, apothem, height](const Point& p) {
     const Eigen::Vector3d d = p - c;
     double sd = std::abs(d.dot(axis)) - 0.5 * height;
-    for (int j = 0; j < 5; ++j) {
-      const double phi = phi0 + j * 2.0 * kPi / 5.0;
-      sd = std::max(sd, d.dot(std::cos(phi) * u + std::sin(phi) * v) - apothem);
-    }
+    for (const Eigen::Vector3d& n : normals) sd = std::max(sd, d.dot(n) - apothem);
     return sd;
   };
   return out;

@@ -1,6 +1,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/kdtree.hpp"
 #include "geometry/pca.hpp"
@@ -105,6 +106,30 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
   };
   return {quantile(low, std::isnan(face_lo) ? 1.0 - open_quantile : 0.5, *lo_it),
           quantile(high, std::isnan(face_hi) ? open_quantile : 0.5, *hi_it)};
+}
+
+double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Point& p : in.cloud) {
+    lo = std::min(lo, p.dot(direction));
+    hi = std::max(hi, p.dot(direction));
+  }
+  const double slab = std::max(in.cfg.face_slab * (hi - lo), 2.0 * in.resolution);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return slab_median_extent(in.cloud, direction, slab, nan, nan, in.cfg.open_end_quantile).second;
+}
+
+std::size_t points_on_planes_along(const PlaneSegmentation& planes,
+                                   const std::vector<Eigen::Vector3d>& normals, double degrees) {
+  const double min_cos = std::cos(degrees * 3.14159265358979323846 / 180.0);
+  std::size_t on = 0;
+  for (const DetectedPlane& p : planes.planes)
+    for (const Eigen::Vector3d& n : normals)
+      if (p.plane.normal.dot(n) >= min_cos) {
+        on += p.inliers.size();
+        break;
+      }
+  return on;
 }
 
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,

@@ -1,3 +1,6 @@
+// Regular tetrahedron from two, three or four of its faces: the seen faces fix its
+// orientation, their planes and where the points end on the hidden side fix the rest.
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -7,13 +10,75 @@
 namespace cloudshape::pipeline {
 namespace {
 
-// Faces of a regular tetrahedron meet at 70.53 deg: outward normals have dot -1/3.
-bool regular_angles(const std::vector<const DetectedPlane*>& faces, double tolerance) {
-  for (std::size_t a = 0; a < faces.size(); ++a)
-    for (std::size_t b = a + 1; b < faces.size(); ++b)
-      if (std::abs(faces[a]->plane.normal.dot(faces[b]->plane.normal) + 1.0 / 3.0) > tolerance)
-        return false;
-  return true;
+// Outward face normals of a regular tetrahedron: every two have dot -1/3 (faces meet at
+// 70.53 deg). With these four normals any four offsets bound a regular tetrahedron.
+const std::array<Eigen::Vector3d, 4>& canonical_normals() {
+  static const std::array<Eigen::Vector3d, 4> n = {
+      Eigen::Vector3d(1, 1, 1).normalized(), Eigen::Vector3d(1, -1, -1).normalized(),
+      Eigen::Vector3d(-1, 1, -1).normalized(), Eigen::Vector3d(-1, -1, 1).normalized()};
+  return n;
+}
+
+bool tetrahedron_angle(const DetectedPlane& a, const DetectedPlane& b, double tolerance) {
+  return std::abs(a.plane.normal.dot(b.plane.normal) + 1.0 / 3.0) <= tolerance;
+}
+
+// The largest set (by points) of at most four faces that meet pairwise as a tetrahedron's.
+std::vector<const DetectedPlane*> tetrahedron_faces(const std::vector<const DetectedPlane*>& faces,
+                                                    double tolerance) {
+  std::vector<const DetectedPlane*> best;
+  std::size_t best_points = 0;
+  for (std::size_t seed = 0; seed < faces.size(); ++seed) {
+    std::vector<const DetectedPlane*> set{faces[seed]};
+    std::size_t points = faces[seed]->inliers.size();
+    for (std::size_t k = 0; k < faces.size() && set.size() < 4; ++k) {
+      if (k == seed) continue;
+      bool fits = true;
+      for (const DetectedPlane* f : set) fits = fits && tetrahedron_angle(*f, *faces[k], tolerance);
+      if (!fits) continue;
+      set.push_back(faces[k]);
+      points += faces[k]->inliers.size();
+    }
+    if (set.size() >= 2 && points > best_points) {
+      best = set;
+      best_points = points;
+    }
+  }
+  return best;
+}
+
+// The rotation taking canonical normals 0..k-1 (in the order `slots`) onto the seen faces'
+// normals, best in the least-squares sense weighted by each face's points (Kabsch).
+Eigen::Matrix3d rotation_onto(const std::vector<const DetectedPlane*>& faces,
+                              const std::array<int, 4>& slots, double& residual) {
+  Eigen::Matrix3d h = Eigen::Matrix3d::Zero();
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    h.noalias() += static_cast<double>(faces[i]->inliers.size()) * faces[i]->plane.normal *
+                   canonical_normals()[slots[i]].transpose();
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(h, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d fix = Eigen::Matrix3d::Identity();
+  fix(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
+  const Eigen::Matrix3d r = svd.matrixU() * fix * svd.matrixV().transpose();
+  residual = 0.0;
+  for (std::size_t i = 0; i < faces.size(); ++i)
+    residual += (r * canonical_normals()[slots[i]] - faces[i]->plane.normal).squaredNorm();
+  return r;
+}
+
+// Face i is the one opposite vertex i, its normal pointing away from it.
+std::array<geometry::Plane, 4> face_planes(const std::array<Point, 4>& vertices) {
+  std::array<geometry::Plane, 4> planes;
+  for (int f = 0; f < 4; ++f) {
+    std::array<Point, 3> tri;
+    for (int v = 0, k = 0; v < 4; ++v)
+      if (v != f) tri[k++] = vertices[v];
+    planes[f] = geometry::plane_through(tri[0], tri[1], tri[2]).value_or(geometry::Plane{});
+    if (planes[f].signed_distance(vertices[f]) > 0) {
+      planes[f].normal = -planes[f].normal;
+      planes[f].offset = -planes[f].offset;
+    }
+  }
+  return planes;
 }
 
 FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices) {
@@ -31,18 +96,7 @@ FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices) {
   out.axes.row(0) = x.transpose();
   out.axes.row(1) = y.transpose();
   out.axes.row(2) = x.cross(y).transpose();
-  // Face i is the one opposite vertex i, oriented away from it.
-  std::array<geometry::Plane, 4> planes;
-  for (int f = 0; f < 4; ++f) {
-    std::array<Point, 3> tri;
-    for (int v = 0, k = 0; v < 4; ++v)
-      if (v != f) tri[k++] = vertices[v];
-    planes[f] = geometry::plane_through(tri[0], tri[1], tri[2]).value_or(geometry::Plane{});
-    if (planes[f].signed_distance(vertices[f]) > 0) {
-      planes[f].normal = -planes[f].normal;
-      planes[f].offset = -planes[f].offset;
-    }
-  }
+  const std::array<geometry::Plane, 4> planes = face_planes(vertices);
   out.signed_distance = [planes](const Point& p) {
     double d = -std::numeric_limits<double>::infinity();
     for (const auto& pl : planes) d = std::max(d, pl.signed_distance(p));
@@ -51,31 +105,62 @@ FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices) {
   return out;
 }
 
-// Three faces seen (a single view): they meet at a vertex, their pairwise lines are the
-// three edges from it, and each edge is as long as the faces' points reach along it.
-std::optional<FittedSolid> from_three_faces(const SolveInput& in,
-                                            const std::vector<const DetectedPlane*>& faces) {
-  const auto apex = geometry::intersect_three_planes(faces[0]->plane, faces[1]->plane, faces[2]->plane);
-  if (!apex) return std::nullopt;
-  std::array<Eigen::Vector3d, 3> edges;
-  double length = 0.0;
-  const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-  for (int e = 0; e < 3; ++e) {
-    const auto line = geometry::intersect_planes(faces[pairs[e][0]]->plane, faces[pairs[e][1]]->plane);
-    if (!line) return std::nullopt;
-    std::vector<double> along;
-    for (int side : pairs[e])
-      for (std::uint32_t i : faces[side]->inliers) along.push_back((in.cloud[i] - *apex).dot(line->direction));
-    double sum = 0.0;
-    for (double t : along) sum += t;
-    edges[e] = sum >= 0.0 ? line->direction : -line->direction;
-    for (double& t : along) t = std::abs(t);
-    const std::size_t top = along.size() - 1 - along.size() / 200;
-    std::nth_element(along.begin(), along.begin() + top, along.end());
-    length += along[top] / 3.0;
+// All four faces seen: vertex i is where the three faces other than face i meet.
+std::optional<std::array<Point, 4>> from_four_faces(const std::vector<const DetectedPlane*>& four) {
+  std::array<Point, 4> vertices;
+  for (int skip = 0; skip < 4; ++skip) {
+    std::array<const geometry::Plane*, 3> three{};
+    for (int f = 0, k = 0; f < 4; ++f)
+      if (f != skip) three[k++] = &four[f]->plane;
+    const auto v = geometry::intersect_three_planes(*three[0], *three[1], *three[2]);
+    if (!v) return std::nullopt;
+    vertices[skip] = *v;
   }
-  return make_tetrahedron({*apex, *apex + length * edges[0], *apex + length * edges[1],
-                           *apex + length * edges[2]});
+  return vertices;
+}
+
+// Two or three faces seen (a single view): the exact tetrahedron normals closest to the
+// seen ones; each seen face sits where its points are, and each hidden face where the
+// points end along its normal. Every hidden face shares an edge with every seen one, and
+// the seen faces are whole up to that edge, so the points do reach it.
+std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
+                                           const std::vector<const DetectedPlane*>& seen) {
+  // Two faces map onto canonical 0, 1 by a rotation either way round; three faces only in
+  // one of their two cyclic orders (the other is a mirror image).
+  std::array<int, 4> slots{0, 1, 2, 3};
+  double residual = 0.0;
+  Eigen::Matrix3d rotation = rotation_onto(seen, slots, residual);
+  if (seen.size() == 3) {
+    double mirrored_residual = 0.0;
+    const std::array<int, 4> mirrored{0, 2, 1, 3};
+    const Eigen::Matrix3d r = rotation_onto(seen, mirrored, mirrored_residual);
+    if (mirrored_residual < residual) rotation = r, slots = mirrored;
+  }
+  std::array<geometry::Plane, 4> planes;
+  std::array<bool, 4> placed{};
+  for (std::size_t i = 0; i < seen.size(); ++i) {
+    const Eigen::Vector3d n = rotation * canonical_normals()[slots[i]];
+    planes[slots[i]] = {n, -detail::face_position(in.cloud, *seen[i], n)};
+    placed[slots[i]] = true;
+  }
+  for (int f = 0; f < 4; ++f) {
+    if (placed[f]) continue;
+    const Eigen::Vector3d n = rotation * canonical_normals()[f];
+    planes[f] = {n, -detail::open_end_support(in, n)};
+  }
+  std::array<Point, 4> vertices;
+  for (int skip = 0; skip < 4; ++skip) {
+    std::array<int, 3> three{};
+    for (int f = 0, k = 0; f < 4; ++f)
+      if (f != skip) three[k++] = f;
+    const auto v = geometry::intersect_three_planes(planes[three[0]], planes[three[1]], planes[three[2]]);
+    if (!v) return std::nullopt;
+    vertices[skip] = *v;
+  }
+  // A face on the wrong side of the opposite vertex would turn the solid inside out.
+  for (int f = 0; f < 4; ++f)
+    if (!(planes[f].signed_distance(vertices[f]) < 0.0)) return std::nullopt;
+  return vertices;
 }
 
 }  // namespace
@@ -83,27 +168,17 @@ std::optional<FittedSolid> from_three_faces(const SolveInput& in,
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
   const double tolerance = std::sin(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
-  if (faces.size() >= 4) {
-    const std::vector<const DetectedPlane*> four(faces.begin(), faces.begin() + 4);
-    if (regular_angles(four, tolerance)) {
-      // Vertex i is where the three faces other than face i meet.
-      std::array<Point, 4> vertices;
-      for (int skip = 0; skip < 4; ++skip) {
-        std::array<const geometry::Plane*, 3> three{};
-        for (int f = 0, k = 0; f < 4; ++f)
-          if (f != skip) three[k++] = &four[f]->plane;
-        const auto v = geometry::intersect_three_planes(*three[0], *three[1], *three[2]);
-        if (!v) return std::nullopt;
-        vertices[skip] = *v;
-      }
-      return make_tetrahedron(vertices);
-    }
-  }
-  if (faces.size() >= 3) {
-    const std::vector<const DetectedPlane*> three(faces.begin(), faces.begin() + 3);
-    if (regular_angles(three, tolerance)) return from_three_faces(in, three);
-  }
-  return std::nullopt;
+  const auto seen = tetrahedron_faces(faces, tolerance);
+  std::optional<std::array<Point, 4>> vertices;
+  if (seen.size() == 4) vertices = from_four_faces(seen);
+  else if (seen.size() >= 2) vertices = from_seen_faces(in, seen);
+  if (!vertices) return std::nullopt;
+  std::vector<Eigen::Vector3d> normals;
+  for (const geometry::Plane& p : face_planes(*vertices)) normals.push_back(p.normal);
+  const auto on_faces = detail::points_on_planes_along(in.planes, normals, in.cfg.parallel_degrees);
+  if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
+    return std::nullopt;
+  return make_tetrahedron(*vertices);
 }
 
 }  // namespace cloudshape::pipeline

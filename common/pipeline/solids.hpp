@@ -97,6 +97,18 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
                                              double slab, double face_lo, double face_hi,
                                              double open_quantile);
 
+// Where the points end along `direction` where no face of theirs ends them: the edge of a
+// seen face against a hidden one. The open end of slab_median_extent (slab: cfg.face_slab
+// of the extent along `direction`, at least two resolutions).
+double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction);
+
+// Points in planes (true faces or not) whose outward normal lies within `degrees` of one
+// of `normals`: how much of the cloud a polyhedron with these face directions accounts
+// for. Every plane on a polyhedron is one of its faces; the tangent strips RANSAC cuts
+// from a curved surface point every way.
+std::size_t points_on_planes_along(const PlaneSegmentation& planes,
+                                   const std::vector<Eigen::Vector3d>& normals, double degrees);
+
 // Points that lie on none of the given faces, nor within `band` of their planes: noisy
 // points of a face that fell outside its fine RANSAC band are still the face's.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,

@@ -10,7 +10,14 @@ namespace cloudshape::synth {
 
 namespace {
 
-void check_indices(const PointList& vertices, const std::vector<Triangle>& triangles) {
+double triangle_area(const PointList& v, const Triangle& t) {
+  const double a = 0.5 * (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm();
+  return std::isfinite(a) ? a : 0.0;
+}
+
+}  // namespace
+
+void check_triangle_indices(const PointList& vertices, const std::vector<Triangle>& triangles) {
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (std::uint32_t index : triangles[t])
       if (index >= vertices.size())
@@ -19,15 +26,8 @@ void check_indices(const PointList& vertices, const std::vector<Triangle>& trian
                                     std::to_string(vertices.size()) + " vertices");
 }
 
-double triangle_area(const PointList& v, const Triangle& t) {
-  const double a = 0.5 * (v[t[1]] - v[t[0]]).cross(v[t[2]] - v[t[0]]).norm();
-  return std::isfinite(a) ? a : 0.0;
-}
-
-}  // namespace
-
 double mesh_area(const PointList& vertices, const std::vector<Triangle>& triangles) {
-  check_indices(vertices, triangles);
+  check_triangle_indices(vertices, triangles);
   double total = 0.0;
   for (const auto& t : triangles) total += triangle_area(vertices, t);
   return total;
@@ -35,7 +35,7 @@ double mesh_area(const PointList& vertices, const std::vector<Triangle>& triangl
 
 PointList sample_mesh_surface(const PointList& vertices, const std::vector<Triangle>& triangles,
                               std::size_t n, std::mt19937_64& rng) {
-  check_indices(vertices, triangles);
+  check_triangle_indices(vertices, triangles);
   // Only triangles with area enter the table, so a zero-area one can never be chosen.
   std::vector<std::size_t> used;
   std::vector<double> cumulative;

@@ -14,6 +14,9 @@ namespace cloudshape::synth {
 
 using Triangle = std::array<std::uint32_t, 3>;
 
+// Throws std::invalid_argument naming the first triangle that refers to a missing vertex.
+void check_triangle_indices(const PointList& vertices, const std::vector<Triangle>& triangles);
+
 // Total area of the mesh's triangles. Throws std::invalid_argument on an out-of-range index.
 double mesh_area(const PointList& vertices, const std::vector<Triangle>& triangles);
 

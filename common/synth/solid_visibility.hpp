@@ -13,7 +13,7 @@ namespace cloudshape::synth {
 // Keeps the points (each on the surface of one of `solids`, which are disjoint and convex)
 // that a pinhole camera at `camera` sees: the surface under the point faces the camera (a
 // surface seen exactly edge-on counts as hidden) and the line of sight enters no other solid.
-// Unlike the z-buffer of visibility.hpp, nothing of a back face leaks past a silhouette.
+// Nothing of a back face leaks past a silhouette (a point z-buffer would let slivers through).
 PointList visible_on_solids(const PointList& points, const std::vector<SolidSpec>& solids,
                             const Eigen::Vector3d& camera);
 

@@ -47,7 +47,7 @@ SyntheticCloud make_synthetic_cloud(const std::vector<SolidSpec>& objects,
   const auto sample = [&](std::size_t m) {
     return sample_objects(objects, areas, total_area, m, rng);
   };
-  // The exact test, not the z-buffer: no sliver of back face leaks past a silhouette.
+  // The exact test: no sliver of back face leaks past a silhouette.
   // Density thinning follows; both are filters, and sample_visible oversamples so that
   // options.points survive them.
   const auto keep = [&](const PointList& points) {

@@ -4,6 +4,7 @@
 #include "commands.hpp"
 #include "io/mesh_reader.hpp"
 #include "synth/mesh_sampling.hpp"
+#include "synth/mesh_visibility.hpp"
 #include "synth/perturb.hpp"
 #include "synth/visibility.hpp"
 
@@ -50,9 +51,16 @@ void run_mesh(const MeshArgs& args) {
     const auto sample = [&](std::size_t m) {
       return synth::sample_mesh_surface(mesh.vertices, mesh.triangles, m, rng);
     };
-    points = camera ? synth::sample_visible(sample, synth::mesh_area(mesh.vertices, mesh.triangles),
-                                            args.points, *camera, rng)
-                    : sample(args.points);
+    if (camera) {
+      // Exact: a point stays when its line of sight crosses no triangle (mesh_visibility.hpp).
+      const synth::MeshVisibility visibility(mesh.vertices, mesh.triangles);
+      const auto keep = [&](const PointList& candidates) {
+        return visibility.visible(candidates, *camera);
+      };
+      points = synth::sample_visible(sample, keep, args.points, rng);
+    } else {
+      points = sample(args.points);
+    }
   } catch (const std::invalid_argument& e) {
     fail(args.file, e.what());
   }
