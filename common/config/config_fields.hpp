@@ -38,6 +38,16 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("support_cell", c.support_cell);
   f("support_iterations", c.support_iterations);
   f("support_score_samples", c.support_score_samples);
+  f("remove_structure", c.remove_structure);
+  f("structure_min_extent", c.structure_min_extent);
+  f("structure_min_share", c.structure_min_share);
+  f("structure_max_planes", c.structure_max_planes);
+  f("structure_min_total", c.structure_min_total);
+  f("structure_normal_neighbours", c.structure_normal_neighbours);
+  f("structure_normal_degrees", c.structure_normal_degrees);
+  f("scene_object_max_extent", c.scene_object_max_extent);
+  f("scene_object_margin", c.scene_object_margin);
+  f("scene_object_min_points", c.scene_object_min_points);
 }
 
 template <class F>

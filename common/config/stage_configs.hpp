@@ -56,6 +56,25 @@ struct PreprocessConfig {
   double support_cell = 3.0;             // occupancy cell of the plane (resolutions) for the overlap
   std::int64_t support_iterations = 300; // RANSAC hypotheses for the support plane
   std::int64_t support_score_samples = 1000;  // points that score each hypothesis
+  // Scenes (ground and walls around small objects, as a lidar sees them), experimental and
+  // off: when no support plane qualifies, planes spanning structure_min_extent of the scene
+  // diagonal and holding structure_min_share of its points, their points' own normals within
+  // structure_normal_degrees, are structure (at most structure_max_planes, found with the
+  // support RANSAC keys; together at least structure_min_total of the points). The components
+  // left over that span at most scene_object_max_extent of the diagonal, lie over a structural
+  // plane that reaches beyond them by scene_object_margin times their extent on three of four
+  // sides, hold scene_object_min_points raw points and are not flat are the objects; each is
+  // gridded again from its own raw points, so a small object gets a lone object's resolution.
+  bool remove_structure = false;
+  double structure_min_extent = 0.25;
+  double structure_min_share = 0.05;
+  std::int64_t structure_max_planes = 8;
+  double structure_min_total = 0.4;  // the structural planes together hold this share of the points
+  std::int64_t structure_normal_neighbours = 12;  // a structural plane's points have their own
+  double structure_normal_degrees = 30.0;         // normals (k-NN) within this angle of its normal
+  double scene_object_max_extent = 0.1;
+  double scene_object_margin = 1.0;
+  std::int64_t scene_object_min_points = 30;
 };
 
 struct PlanesConfig {

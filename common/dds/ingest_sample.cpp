@@ -5,8 +5,7 @@
 #include <sstream>
 
 #include "dds/convert.hpp"
-#include "pipeline/preprocess.hpp"
-#include "pipeline/split_objects.hpp"
+#include "pipeline/object_clouds.hpp"
 
 namespace cloudshape::dds {
 
@@ -54,8 +53,8 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
 std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
   const RawCloudPoints raw = raw_cloud_points(in, cfg.input);
   const auto start = std::chrono::steady_clock::now();
-  const pipeline::PreprocessedCloud pre = pipeline::preprocess_cloud(raw.points, cfg.preprocess);
-  const std::vector<PointList> objects = pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, cfg.preprocess);
+  const std::vector<pipeline::ObjectCloud>& objects = clouds.objects;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::vector<msg::FilteredCloud> out;
   // No object at all still makes one message (object_count 0): one result per cloud.
@@ -66,7 +65,9 @@ std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const 
     o.header().object_index(static_cast<std::uint32_t>(i));
     o.header().object_count(static_cast<std::uint32_t>(count));
     o.header().timings().preprocess_ms(ms);
-    o.cloud(to_msg(count == 0 ? PointList{} : objects[i], pre, raw.points.size()));
+    o.cloud(to_msg(count == 0 ? PointList{} : objects[i].points, clouds.scene, raw.points.size()));
+    // An object found among a scene's structure was gridded at its own resolution.
+    if (count != 0) o.cloud().resolution(objects[i].resolution);
     out.push_back(std::move(o));
   }
   return out;

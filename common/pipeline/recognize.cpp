@@ -5,9 +5,8 @@
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
-#include "pipeline/preprocess.hpp"
+#include "pipeline/object_clouds.hpp"
 #include "pipeline/solve.hpp"
-#include "pipeline/split_objects.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -34,22 +33,19 @@ RecognitionResult recognize_cloud(const PointList& points, const config::Pipelin
   result.points_in = points.size();
   StageClock clock;
 
-  const PreprocessedCloud pre = preprocess_cloud(points, cfg.preprocess);
-  result.points_used = pre.points.size();
-  result.resolution = pre.resolution;
+  const ObjectClouds clouds = object_clouds(points, cfg.preprocess);
+  result.points_used = clouds.scene.points.size();
+  result.resolution = clouds.scene.resolution;
   result.timings.preprocess_ms = clock.lap_ms();
 
-  const std::vector<PointList> objects = split_objects(pre.points, pre.resolution, cfg.preprocess);
-  result.timings.preprocess_ms += clock.lap_ms();
-
-  for (const PointList& object : objects) {
-    const PlaneSegmentation planes = segment_planes(object, pre.resolution, cfg.planes);
+  for (const ObjectCloud& o : clouds.objects) {
+    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes);
     result.timings.planes_ms += clock.lap_ms();
-    const KeypointSet keypoints = find_keypoints(object, planes, pre.resolution, cfg.keypoints);
+    const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints);
     result.timings.keypoints_ms += clock.lap_ms();
-    const Classification cls = classify_cloud(object, planes, keypoints, pre.resolution, cfg.classify);
+    const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
     result.timings.classify_ms += clock.lap_ms();
-    result.objects.push_back(solve_object(object, planes, keypoints, cls, pre.resolution, cfg.solve));
+    result.objects.push_back(solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve));
     result.timings.solve_ms += clock.lap_ms();
   }
   const StageTimings& t = result.timings;

@@ -13,8 +13,6 @@
 namespace cloudshape::pipeline {
 using geometry::detail::UnionFind;
 
-namespace {
-
 // Spread (standard deviation) of the points across their longest direction: the second
 // principal axis. A strip along a silhouette edge has almost none.
 double spread_across(const PointList& points) {
@@ -28,15 +26,8 @@ double spread_across(const PointList& points) {
   return std::sqrt(std::max(eig(1), 0.0));
 }
 
-}  // namespace
-
-std::vector<PointList> split_objects(const PointList& scene, double resolution,
-                                     const config::PreprocessConfig& cfg, std::size_t* dropped) {
-  if (dropped) *dropped = 0;
-  // The table or floor would join every object standing on it into one.
-  const PointList points = remove_support_plane(scene, resolution, cfg);
-  const double cell = cfg.object_gap * resolution;
-  if (!cfg.split_objects || points.empty() || !(cell > 0.0)) return {points};
+std::vector<PointList> connected_components(const PointList& points, double cell) {
+  if (points.empty() || !(cell > 0.0)) return {points};
   const geometry::Bounds b = geometry::bounding_box(points);
   if (!(((b.max - b.min) / cell).maxCoeff() < double((1 << 20) - 2))) return {points};
 
@@ -63,7 +54,6 @@ std::vector<PointList> split_objects(const PointList& scene, double resolution,
           if (other != geometry::detail::CellMap::kAbsent) uf.unite(static_cast<std::uint32_t>(c), other);
         }
   }
-  std::vector<std::uint32_t> component(cell_keys.size());
   std::vector<std::uint32_t> root_to_component(cell_keys.size(), ~0u);
   std::vector<PointList> parts;
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -75,6 +65,19 @@ std::vector<PointList> split_objects(const PointList& scene, double resolution,
     parts[root_to_component[root]].push_back(points[i]);
   }
   std::sort(parts.begin(), parts.end(), [](const PointList& a, const PointList& b) { return a.size() > b.size(); });
+  return parts;
+}
+
+std::vector<PointList> split_objects(const PointList& scene, double resolution,
+                                     const config::PreprocessConfig& cfg, std::size_t* dropped,
+                                     bool* support_removed) {
+  if (dropped) *dropped = 0;
+  // The table or floor would join every object standing on it into one.
+  const PointList points = remove_support_plane(scene, resolution, cfg, support_removed);
+  const double cell = cfg.object_gap * resolution;
+  if (!cfg.split_objects || points.empty() || !(cell > 0.0)) return {points};
+  std::vector<PointList> parts = connected_components(points, cell);
+  if (parts.size() <= 1) return parts;
   const auto min_size = static_cast<std::size_t>(std::ceil(cfg.min_object_fraction * static_cast<double>(points.size())));
   std::vector<PointList> kept;
   const double largest = static_cast<double>(parts.front().size());

@@ -18,8 +18,16 @@ namespace cloudshape::pipeline {
 // smaller than cfg.fragment_max_share of the largest component: fragments a sensor leaves
 // along silhouettes, not objects. A small solid is neither, so it stays.
 // With splitting off, or nothing to split, the one component is the whole cloud.
+// *support_removed, when given, says whether a support plane was cut away.
 std::vector<PointList> split_objects(const PointList& points, double resolution,
                                      const config::PreprocessConfig& cfg,
-                                     std::size_t* dropped = nullptr);
+                                     std::size_t* dropped = nullptr, bool* support_removed = nullptr);
+
+// Connected components over cells of edge `cell` (26-neighbourhood), largest first.
+std::vector<PointList> connected_components(const PointList& points, double cell);
+
+// Spread (standard deviation) of non-empty `points` across their longest direction (the
+// second principal axis): almost none for a strip along a silhouette edge.
+double spread_across(const PointList& points);
 
 }  // namespace cloudshape::pipeline

@@ -12,9 +12,6 @@
 
 namespace cloudshape::pipeline {
 
-namespace {
-
-
 // Extents of the given points' projections along u and v: {lo_u, hi_u, lo_v, hi_v}.
 std::array<double, 4> footprint(const PointList& points, const std::vector<std::uint32_t>& idx,
                                 const Eigen::Vector3d& u, const Eigen::Vector3d& v) {
@@ -26,6 +23,44 @@ std::array<double, 4> footprint(const PointList& points, const std::vector<std::
   }
   return f;
 }
+
+std::optional<geometry::Plane> dominant_plane(const PointList& points, double band, std::int64_t iterations,
+                                              std::int64_t score_samples, std::uint64_t seed,
+                                              const std::vector<Eigen::Vector3d>* normals, double min_cos) {
+  const auto fits = [&](const geometry::Plane& plane, std::size_t i) {
+    return std::abs(plane.signed_distance(points[i])) < band &&
+           (!normals || std::abs((*normals)[i].dot(plane.normal)) >= min_cos);
+  };
+  if (points.size() < 3) return std::nullopt;
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
+  const std::size_t step =
+      std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, static_cast<std::size_t>(score_samples)));
+  std::optional<geometry::Plane> best;
+  std::size_t best_score = 0;
+  for (std::int64_t it = 0; it < iterations; ++it) {
+    const auto plane = geometry::plane_through(points[pick(rng)], points[pick(rng)], points[pick(rng)]);
+    if (!plane) continue;
+    std::size_t score = 0;
+    for (std::size_t i = 0; i < points.size(); i += step) score += fits(*plane, i);
+    if (score > best_score) best_score = score, best = plane;
+  }
+  if (!best) return std::nullopt;
+  std::vector<std::uint32_t> on;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (fits(*best, i)) on.push_back(static_cast<std::uint32_t>(i));
+  if (on.size() < 3) return std::nullopt;
+  return geometry::fit_plane_least_squares(points, on);
+}
+
+bool surrounds(const std::array<double, 4>& plane, const std::array<double, 4>& objects, double margin) {
+  const double du = margin * (objects[1] - objects[0]), dv = margin * (objects[3] - objects[2]);
+  const int sides = (plane[0] <= objects[0] - du) + (plane[1] >= objects[1] + du) +
+                    (plane[2] <= objects[2] - dv) + (plane[3] >= objects[3] + dv);
+  return sides >= 3;
+}
+
+namespace {
 
 // Share of the objects' points whose foot on the plane (their projection along its normal)
 // falls where the plane itself was seen. A solid's face lies under nearly all the rest of the
@@ -46,17 +81,6 @@ double shadowed_share(const PointList& points, const std::vector<std::uint32_t>&
   return objects.empty() ? 0.0 : static_cast<double>(over) / static_cast<double>(objects.size());
 }
 
-// True when the plane's footprint reaches beyond the objects' by `margin` times their extent
-// on at least three of its four sides (the image border may crop a table on the fourth). A
-// solid's own face reaches beyond the rest on one side at most: the solid's other faces end
-// at its edges, and in a single view the visible ones line one or two of its edges.
-bool surrounds(const std::array<double, 4>& plane, const std::array<double, 4>& objects, double margin) {
-  const double du = margin * (objects[1] - objects[0]), dv = margin * (objects[3] - objects[2]);
-  const int sides = (plane[0] <= objects[0] - du) + (plane[1] >= objects[1] + du) +
-                    (plane[2] <= objects[2] - dv) + (plane[3] >= objects[3] + dv);
-  return sides >= 3;
-}
-
 }  // namespace
 
 PointList remove_support_plane(const PointList& points, double resolution,
@@ -64,26 +88,10 @@ PointList remove_support_plane(const PointList& points, double resolution,
   if (removed) *removed = false;
   if (!cfg.remove_support_plane || points.size() < 100 || !(resolution > 0.0)) return points;
   const double band = cfg.support_band * resolution;
-  std::mt19937_64 rng(59907u);
-  std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
-  const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, static_cast<std::size_t>(cfg.support_score_samples)));
-
-  std::optional<geometry::Plane> best;
-  std::size_t best_score = 0;
-  for (std::int64_t it = 0; it < cfg.support_iterations; ++it) {
-    const auto plane = geometry::plane_through(points[pick(rng)], points[pick(rng)], points[pick(rng)]);
-    if (!plane) continue;
-    std::size_t score = 0;
-    for (std::size_t i = 0; i < points.size(); i += step) score += std::abs(plane->signed_distance(points[i])) < band;
-    if (score > best_score) best_score = score, best = plane;
-  }
-  if (!best) return points;
+  const auto fitted = dominant_plane(points, band, cfg.support_iterations, cfg.support_score_samples, 59907u);
+  if (!fitted) return points;
+  const geometry::Plane plane = *fitted;
   std::vector<std::uint32_t> on;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (std::abs(best->signed_distance(points[i])) < band) on.push_back(static_cast<std::uint32_t>(i));
-  if (on.size() < 3) return points;
-  const geometry::Plane plane = geometry::fit_plane_least_squares(points, on);
-  on.clear();
   std::array<std::vector<std::uint32_t>, 2> side;  // below, above
   for (std::size_t i = 0; i < points.size(); ++i) {
     const double d = plane.signed_distance(points[i]);
