@@ -7,22 +7,12 @@
 namespace cloudshape::pipeline {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-}
 
-std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
-  const auto faces = detail::faces_by_size(in.planes);
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
-  // Caps: two faces facing opposite ways; else the largest face; else no cap is seen and
-  // the side's normals give the axis.
-  std::vector<const DetectedPlane*> caps;
-  for (std::size_t a = 0; a < faces.size() && caps.empty(); ++a)
-    for (std::size_t b = a + 1; b < faces.size() && caps.empty(); ++b)
-      if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -cos_parallel)
-        caps = {faces[a], faces[b]};
-  if (caps.empty() && !faces.empty()) caps = {faces[0]};
-  const Eigen::Vector3d axis = caps.empty()
-                                   ? detail::axis_from_normals(in.cloud_normals())
-                                   : caps[0]->plane.normal;
+// The cylinder around `axis`: radius from the side (the points off every flat face across the
+// axis), height from `caps` and the extreme points along the axis.
+std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
+                                           const std::vector<const DetectedPlane*>& caps,
+                                           const Eigen::Vector3d& axis, double cos_parallel) {
   // Every flat face across the axis is cap-like (a recessed lid, the top of a rim): none
   // of them belongs to the side the radius is fitted on.
   std::vector<const DetectedPlane*> across;
@@ -69,6 +59,33 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
     return std::max((d - h * axis).norm() - radius, std::abs(h) - 0.5 * height);
   };
   return out;
+}
+
+}  // namespace
+
+
+
+std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
+  const auto faces = detail::faces_by_size(in.planes);
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
+  // Caps: two faces facing opposite ways; else the largest face; else no cap is seen and
+  // the side's normals give the axis.
+  std::vector<const DetectedPlane*> caps;
+  for (std::size_t a = 0; a < faces.size() && caps.empty(); ++a)
+    for (std::size_t b = a + 1; b < faces.size() && caps.empty(); ++b)
+      if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -cos_parallel)
+        caps = {faces[a], faces[b]};
+  if (caps.empty() && !faces.empty()) caps = {faces[0]};
+  const Eigen::Vector3d axis = caps.empty()
+                                   ? detail::axis_from_normals(in.cloud_normals())
+                                   : caps[0]->plane.normal;
+  return fit_around_axis(in, faces, caps, axis, cos_parallel);
+}
+
+std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) {
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
+  return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()),
+                         cos_parallel);
 }
 
 }  // namespace cloudshape::pipeline

@@ -62,6 +62,10 @@ std::optional<FittedSolid> fit_box(const SolveInput& in);
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in);
 std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in);
 std::optional<FittedSolid> fit_cylinder(const SolveInput& in);
+// The cylinder with its axis from the surface normals alone, ignoring every flat face: the
+// second chance when no solid explains the points, since a curved side seen from one side can
+// break into strips flat enough to pass for faces, and the largest then poses as a cap.
+std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in);
 std::optional<FittedSolid> fit_cone(const SolveInput& in);
 std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
 

@@ -99,6 +99,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
   }
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
+    if (auto second = fit_cylinder_from_side_normals(input); second && plausible(*second, diameter, cfg.max_size_ratio)) {
+      const Verification v =
+          verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+      if (v.explained >= cfg.min_inlier_fraction && (!chosen || v.explained > chosen->second.explained)) {
+        fitted.emplace_back(std::move(*second), v);
+        chosen = &fitted.back();
+      }
+    }
+  }
+  if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
     char buf[160];
     if (chosen)
       std::snprintf(buf, sizeof buf, "no solid explains the points (best: %s, %.0f%% of points)",

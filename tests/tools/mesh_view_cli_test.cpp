@@ -1,8 +1,8 @@
 // End to end, as the outside evaluation makes its single views of real meshes:
 // `cloudshape-synth mesh FILE --points 20000 --view X,Y,Z` then `cloudshape-recognize`. A box
 // seen with one face at a grazing angle must come out as one box, with no stray objects made of
-// hidden-surface slivers or cut off by a hole in the grazing face. Skipped when shared/ is not
-// beside the repository.
+// hidden-surface slivers or cut off by a hole in the grazing face; a can seen from the side as
+// one cylinder. Skipped when shared/ is not beside the repository.
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "process.hpp"
@@ -24,17 +25,26 @@ struct MeshView {
   std::string name;
   std::string file;  // under shared/data/real
   std::string camera;
-  std::vector<double> dims;  // box length, width, height in the file's unit
-  double tolerance;          // per dimension, the file's unit
+  std::string shape;
+  std::vector<std::pair<std::string, double>> dims;  // INTERFACE.md names, the file's unit
+  double tolerance;                                  // per dimension, the file's unit
 };
 
 std::vector<MeshView> views() {
   return {
       // The +x face seen at a grazing angle: the z-buffer left its first 14 mm empty and the
       // recogniser found the box plus two coplanar strips.
-      {"wood_block", "ycb/036_wood_block_google16k.obj", "0.1,-0.6,0.3", {0.2045, 0.0884, 0.0871}, 0.008},
+      {"wood_block", "ycb/036_wood_block_google16k.obj", "0.1,-0.6,0.3", "box",
+       {{"length", 0.2045}, {"width", 0.0884}, {"height", 0.0871}}, 0.008},
       // The CAD cube from the same direction: the z-buffer's slivers made four extra objects.
-      {"ravens_cube", "ravens/kitting_03_cube.obj", "10,-60,30", {20, 20, 20}, 0.2},
+      {"ravens_cube", "ravens/kitting_03_cube.obj", "10,-60,30", "box", {{"length", 20}, {"width", 20}, {"height", 20}}, 0.2},
+      // A can from the side, barely above its lid: the side breaks into strips flat enough to
+      // pass for faces, and the cylinder fitted on the largest as a cap explained too little
+      // (unknown) until the side's normals gave the axis. Truth: SOURCES.md, 32.95 x 101.9 mm.
+      {"tomato_can_side", "ycb/005_tomato_soup_can_google16k.obj", "0.1,-0.6,0.3", "cylinder",
+       {{"radius", 0.03295}, {"height", 0.1019}}, 0.003},
+      {"tomato_can_low", "ycb/005_tomato_soup_can_google16k.obj", "0.6,-0.2,0.2", "cylinder",
+       {{"radius", 0.03295}, {"height", 0.1019}}, 0.003},
   };
 }
 
@@ -43,7 +53,7 @@ void PrintTo(const MeshView& v, std::ostream* os) { *os << v.name; }
 
 class MeshViewCli : public ::testing::TestWithParam<MeshView> {};
 
-TEST_P(MeshViewCli, GivesOneBoxOfTheVisibleSize) {
+TEST_P(MeshViewCli, GivesOneSolidOfTheVisibleSize) {
   const MeshView& view = GetParam();
   const fs::path mesh = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / view.file;
   if (!fs::exists(mesh)) GTEST_SKIP() << mesh << " not present";
@@ -59,11 +69,12 @@ TEST_P(MeshViewCli, GivesOneBoxOfTheVisibleSize) {
   EXPECT_EQ(result.at("points_in"), 20000);
   const auto& objects = result.at("objects");
   ASSERT_EQ(objects.size(), 1u) << objects.dump();
-  EXPECT_EQ(objects[0].at("shape"), "box") << objects[0].dump();
+  ASSERT_EQ(objects[0].at("shape"), view.shape) << objects[0].dump();
   const auto& d = objects[0].at("dimensions");
-  ASSERT_TRUE(d.contains("length")) << d.dump();
-  const std::vector<double> got = {d.at("length"), d.at("width"), d.at("height")};
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(got[i], view.dims[i], view.tolerance) << i;
+  for (const auto& [name, truth] : view.dims) {
+    ASSERT_TRUE(d.contains(name)) << d.dump();
+    EXPECT_NEAR(d.at(name).get<double>(), truth, view.tolerance) << name;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(RealMeshes, MeshViewCli, ::testing::ValuesIn(views()),
