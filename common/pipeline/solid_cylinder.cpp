@@ -8,16 +8,19 @@ namespace cloudshape::pipeline {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
+// Two normals closer than solve.parallel_degrees are parallel: this cosine.
+double cos_parallel(const SolveInput& in) { return std::cos(in.cfg.parallel_degrees * kPi / 180.0); }
+
 // The cylinder around `axis`: radius from the side (the points off every flat face across the
 // axis), height from `caps` and the extreme points along the axis.
 std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                                            const std::vector<const DetectedPlane*>& caps,
-                                           const Eigen::Vector3d& axis, double cos_parallel) {
+                                           const Eigen::Vector3d& axis) {
   // Every flat face across the axis is cap-like (a recessed lid, the top of a rim): none
   // of them belongs to the side the radius is fitted on.
   std::vector<const DetectedPlane*> across;
   for (const DetectedPlane* f : faces)
-    if (std::abs(f->plane.normal.dot(axis)) > cos_parallel) across.push_back(f);
+    if (std::abs(f->plane.normal.dot(axis)) > cos_parallel(in)) across.push_back(f);
   const auto side = detail::points_off_faces(in.cloud, across, in.cfg.cap_band * in.resolution);
   if (side.size() < 6) return std::nullopt;
 
@@ -63,29 +66,24 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
 
 }  // namespace
 
-
-
 std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
   // Caps: two faces facing opposite ways; else the largest face; else no cap is seen and
   // the side's normals give the axis.
   std::vector<const DetectedPlane*> caps;
   for (std::size_t a = 0; a < faces.size() && caps.empty(); ++a)
     for (std::size_t b = a + 1; b < faces.size() && caps.empty(); ++b)
-      if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -cos_parallel)
+      if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -cos_parallel(in))
         caps = {faces[a], faces[b]};
   if (caps.empty() && !faces.empty()) caps = {faces[0]};
   const Eigen::Vector3d axis = caps.empty()
                                    ? detail::axis_from_normals(in.cloud_normals())
                                    : caps[0]->plane.normal;
-  return fit_around_axis(in, faces, caps, axis, cos_parallel);
+  return fit_around_axis(in, faces, caps, axis);
 }
 
 std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) {
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
-  return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()),
-                         cos_parallel);
+  return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()));
 }
 
 }  // namespace cloudshape::pipeline
