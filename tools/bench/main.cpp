@@ -5,6 +5,8 @@
 //   cloudshape-bench --accuracy [--count N] [--conditions clean,noise,...] [--seed S]
 //                    [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
+//   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
+//                    (labelled real or synthetic scenes: see scene_bench.hpp)
 //
 // For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
 // its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
@@ -26,6 +28,7 @@
 #include "accuracy.hpp"
 #include "bench_stats.hpp"
 #include "config/pipeline_config.hpp"
+#include "scene_bench.hpp"
 #include "pipeline/recognize.hpp"
 #include "synth/perturb.hpp"
 #include "synth/random_solid.hpp"
@@ -152,6 +155,14 @@ int main(int argc, char** argv) {
                "--accuracy: one line per cloud on stderr (truths, results, how it was made)");
   app.add_option("--save-clouds", save_dir,
                  "--accuracy: also write every cloud to DIR/<condition>-<shape>-<i>.pcd");
+  cs::bench::SceneOptions scenes;
+  app.add_option("--scenes", scenes.dir,
+                 "score the labelled scenes (.pcd with a label field) in DIR instead")
+      ->excludes("--accuracy");
+  app.add_option("--truth", scenes.truth,
+                 "--scenes: expected shapes per scene (default: the mOSD learn truth for the "
+                 "scenes it lists; <scene>.truth.json sidecars override)");
+  app.add_flag("--per-scene", scenes.per_scene, "--scenes: one line per scene on stderr");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -212,6 +223,12 @@ int main(int argc, char** argv) {
     options.save_dir = save_dir;
     options.config_label = config_path.empty() ? "built-in defaults" : config_path;
     return cs::bench::run_accuracy(options, cfg);
+  }
+  if (!scenes.dir.empty()) {
+    scenes.default_truth = CLOUDSHAPE_SCENE_TRUTH;
+    scenes.json = json;
+    scenes.config_label = config_path.empty() ? "built-in defaults" : config_path;
+    return cs::bench::run_scenes(scenes, cfg);
   }
 
   // Progress only on a terminal: redirected output stays the table alone.

@@ -1,0 +1,193 @@
+// The scene benchmark's driver: lists DIR, finds each scene's truth, recognises and scores
+// every labelled scene in turn (one frame in memory at a time), then prints the tallies.
+#include "scene_bench.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <unistd.h>
+
+#include "io/cloud_reader.hpp"
+#include "pipeline/recognize.hpp"
+#include "scene_report.hpp"
+
+namespace cloudshape::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Thrown for any bad input; run_scenes turns it into the one-line message and exit status 2.
+struct InputError {
+  std::string message;
+};
+
+// learn2 before learn10: digit runs compare as numbers.
+bool natural_less(const std::string& a, const std::string& b) {
+  std::size_t i = 0;
+  std::size_t j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit(static_cast<unsigned char>(a[i])) && std::isdigit(static_cast<unsigned char>(b[j]))) {
+      std::size_t ei = i;
+      std::size_t ej = j;
+      while (ei < a.size() && std::isdigit(static_cast<unsigned char>(a[ei]))) ++ei;
+      while (ej < b.size() && std::isdigit(static_cast<unsigned char>(b[ej]))) ++ej;
+      const std::string na = a.substr(i, ei - i);
+      const std::string nb = b.substr(j, ej - j);
+      if (na.size() != nb.size()) return na.size() < nb.size();
+      if (na != nb) return na < nb;
+      i = ei;
+      j = ej;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i;
+      ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+std::vector<fs::path> scene_files(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError{"--scenes: " + dir + " is not a directory"};
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext == ".pcd" && entry.is_regular_file()) files.push_back(entry.path());
+  }
+  if (ec) throw InputError{"--scenes: " + dir + ": cannot be listed (" + ec.message() + ")"};
+  if (files.empty()) throw InputError{"--scenes: " + dir + " holds no .pcd file"};
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    return natural_less(a.filename().string(), b.filename().string());
+  });
+  return files;
+}
+
+// A scene's truth: its sidecar (objects it does not list keep the truth file's category
+// shapes), else its truth-file entry, else none.
+std::optional<SceneTruth> truth_of(const fs::path& scene, const std::optional<TruthFile>& file) {
+  const std::string name = scene.filename().string();
+  std::optional<SceneTruth> listed = file ? file->scene(name) : std::nullopt;
+  const std::string sidecar = sidecar_path(scene.string());
+  std::error_code ec;
+  if (!fs::exists(sidecar, ec)) return listed;
+  SceneTruth t = load_sidecar(sidecar, listed ? listed->category : "scenes");
+  if (listed) t.default_shapes = listed->default_shapes;
+  return t;
+}
+
+io::CloudFile read_scene(const fs::path& path) {
+  try {
+    return io::read_cloud(path.string());
+  } catch (const io::ReadError& e) {
+    throw InputError{e.what()};
+  }
+}
+
+SceneRun run_scene(const fs::path& path, const SceneTruth& truth, const config::PipelineConfig& cfg) {
+  const io::CloudFile cloud = read_scene(path);
+  if (cloud.labels.empty())
+    throw InputError{path.string() + ": no label field, but the truth lists it as a labelled scene"};
+  SceneRun run;
+  run.file = path.filename().string();
+  run.category = truth.category;
+  run.points = cloud.points.size();
+  run.organized = cloud.grid.organized();
+  const auto t0 = std::chrono::steady_clock::now();
+  const pipeline::RecognitionResult result =
+      pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, run.file);
+  const auto t1 = std::chrono::steady_clock::now();
+  run.wall_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+  run.total_ms = result.timings.total_ms;
+  std::vector<ReportedObject> reported;
+  for (const auto& o : result.objects) {
+    reported.push_back(reported_object(o));
+    run.reported_shapes.push_back(o.shape);
+  }
+  try {
+    run.score = score_scene(cloud.points, cloud.labels, truth, reported);
+  } catch (const std::invalid_argument& e) {
+    throw InputError{path.string() + ": " + e.what()};
+  }
+  return run;
+}
+
+int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
+  const std::vector<fs::path> files = scene_files(options.dir);
+  std::optional<TruthFile> truth_file;
+  std::error_code ec;
+  if (!options.truth.empty()) {
+    truth_file = load_truth_file(options.truth);
+  } else if (!options.default_truth.empty() && fs::exists(options.default_truth, ec)) {
+    truth_file = load_truth_file(options.default_truth);
+  }
+
+  // Every truth is read and every scene without one looked at before the long part starts.
+  std::vector<std::pair<fs::path, SceneTruth>> scenes;
+  for (const auto& f : files) {
+    if (auto t = truth_of(f, truth_file)) {
+      scenes.emplace_back(f, *t);
+      continue;
+    }
+    if (read_scene(f).labels.empty()) {
+      std::fprintf(stderr, "cloudshape-bench: %s: skipped (no label field)\n", f.string().c_str());
+      continue;
+    }
+    throw InputError{f.string() + ": a labelled scene without truth: no sidecar " +
+                     sidecar_path(f.string()) + (truth_file ? ", not in " + truth_file->path : "") +
+                     " (give --truth FILE)"};
+  }
+  if (scenes.empty()) throw InputError{"--scenes: " + options.dir + " holds no labelled scene"};
+
+  const bool progress = isatty(fileno(stderr)) != 0;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SceneRun> runs;
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    if (progress)
+      std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
+                   scenes[k].first.filename().string().c_str());
+    runs.push_back(run_scene(scenes[k].first, scenes[k].second, cfg));
+  }
+  if (progress) std::fprintf(stderr, "\r%70s\r", "");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const auto rows = tally_scenes(runs, truth_file ? truth_file->category_order
+                                                  : std::vector<std::string>{});
+  if (options.per_scene) print_scene_lines(runs, stderr);
+  if (options.json) {
+    nlohmann::ordered_json settings;
+    settings["dir"] = options.dir;
+    settings["truth"] = truth_file ? nlohmann::ordered_json(truth_file->path)
+                                   : nlohmann::ordered_json(nullptr);
+    settings["config"] = options.config_label;
+    settings["min_group_points"] = kMinGroupPoints;
+    settings["seconds"] = seconds;
+    std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
+  } else {
+    print_scene_table(rows, stdout);
+    std::printf("\n%zu scenes of %s in %.1f s (truth: %s)\n", runs.size(), options.dir.c_str(),
+                seconds, truth_file ? truth_file->path.c_str() : "sidecars");
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_scenes(const SceneOptions& options, const config::PipelineConfig& cfg) {
+  try {
+    return run(options, cfg);
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "cloudshape-bench: %s\n", e.message.c_str());
+  } catch (const TruthError& e) {
+    std::fprintf(stderr, "cloudshape-bench: %s\n", e.what());
+  }
+  return 2;
+}
+
+}  // namespace cloudshape::bench

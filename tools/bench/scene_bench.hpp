@@ -1,0 +1,26 @@
+// cloudshape-bench --scenes DIR: recognises every labelled scene in DIR and scores it against
+// its per-point labels (scene_score.hpp) and expected shapes (scene_truth.hpp).
+#pragma once
+
+#include <string>
+
+#include "config/pipeline_config.hpp"
+
+namespace cloudshape::bench {
+
+struct SceneOptions {
+  std::string dir;
+  // --truth FILE; empty: `default_truth` for the scenes it lists. A scene's sidecar
+  // (<scene>.truth.json) overrides either.
+  std::string truth;
+  std::string default_truth;
+  bool json = false;
+  bool per_scene = false;    // one line per scene on stderr
+  std::string config_label;  // what --json reports as the configuration used
+};
+
+// Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,
+// or 2 after a one-line message naming the input for a bad directory, scene or truth file.
+int run_scenes(const SceneOptions& options, const config::PipelineConfig& cfg);
+
+}  // namespace cloudshape::bench
