@@ -68,17 +68,25 @@ std::vector<fs::path> scene_files(const std::string& dir) {
   return files;
 }
 
+struct Scene {
+  fs::path path;
+  SceneTruth truth;
+  std::string truth_source;
+};
+
 // A scene's truth: its sidecar (objects it does not list keep the truth file's category
 // shapes), else its truth-file entry, else none.
-std::optional<SceneTruth> truth_of(const fs::path& scene, const std::optional<TruthFile>& file) {
-  const std::string name = scene.filename().string();
-  std::optional<SceneTruth> listed = file ? file->scene(name) : std::nullopt;
-  const std::string sidecar = sidecar_path(scene.string());
+std::optional<Scene> scene_of(const fs::path& path, const std::optional<TruthFile>& file) {
+  std::optional<SceneTruth> listed = file ? file->scene(path.filename().string()) : std::nullopt;
+  const std::string sidecar = sidecar_path(path.string());
   std::error_code ec;
-  if (!fs::exists(sidecar, ec)) return listed;
-  SceneTruth t = load_sidecar(sidecar, listed ? listed->category : "scenes");
-  if (listed) t.default_shapes = listed->default_shapes;
-  return t;
+  if (fs::exists(sidecar, ec)) {
+    SceneTruth t = load_sidecar(sidecar, listed ? listed->category : "uncategorized");
+    if (listed) t.default_shapes = listed->default_shapes;
+    return Scene{path, t, sidecar};
+  }
+  if (listed) return Scene{path, *listed, file->path};
+  return std::nullopt;
 }
 
 io::CloudFile read_scene(const fs::path& path) {
@@ -89,13 +97,16 @@ io::CloudFile read_scene(const fs::path& path) {
   }
 }
 
-SceneRun run_scene(const fs::path& path, const SceneTruth& truth, const config::PipelineConfig& cfg) {
+SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg) {
+  const fs::path& path = scene.path;
+  const SceneTruth& truth = scene.truth;
   const io::CloudFile cloud = read_scene(path);
   if (cloud.labels.empty())
     throw InputError{path.string() + ": no label field, but the truth lists it as a labelled scene"};
   SceneRun run;
   run.file = path.filename().string();
   run.category = truth.category;
+  run.truth = scene.truth_source;
   run.points = cloud.points.size();
   run.organized = cloud.grid.organized();
   const auto t0 = std::chrono::steady_clock::now();
@@ -117,6 +128,18 @@ SceneRun run_scene(const fs::path& path, const SceneTruth& truth, const config::
   return run;
 }
 
+// "FILE", "FILE, 2 sidecars" or "3 sidecars": where the expected shapes came from.
+std::string truth_sources(const std::vector<Scene>& scenes, const std::optional<TruthFile>& file) {
+  std::size_t sidecars = 0;
+  for (const auto& s : scenes) sidecars += !file || s.truth_source != file->path;
+  std::string text = sidecars < scenes.size() ? file->path : "";
+  if (sidecars > 0) {
+    text += (text.empty() ? "" : ", ") + std::to_string(sidecars) + " sidecar" +
+            (sidecars == 1 ? "" : "s");
+  }
+  return text;
+}
+
 int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
   const std::vector<fs::path> files = scene_files(options.dir);
   std::optional<TruthFile> truth_file;
@@ -128,10 +151,10 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
   }
 
   // Every truth is read and every scene without one looked at before the long part starts.
-  std::vector<std::pair<fs::path, SceneTruth>> scenes;
+  std::vector<Scene> scenes;
   for (const auto& f : files) {
-    if (auto t = truth_of(f, truth_file)) {
-      scenes.emplace_back(f, *t);
+    if (auto s = scene_of(f, truth_file)) {
+      scenes.push_back(*s);
       continue;
     }
     if (read_scene(f).labels.empty()) {
@@ -150,8 +173,8 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
   for (std::size_t k = 0; k < scenes.size(); ++k) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
-                   scenes[k].first.filename().string().c_str());
-    runs.push_back(run_scene(scenes[k].first, scenes[k].second, cfg));
+                   scenes[k].path.filename().string().c_str());
+    runs.push_back(run_scene(scenes[k], cfg));
   }
   if (progress) std::fprintf(stderr, "\r%70s\r", "");
   const double seconds =
@@ -171,8 +194,9 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
   } else {
     print_scene_table(rows, stdout);
-    std::printf("\n%zu scenes of %s in %.1f s (truth: %s)\n", runs.size(), options.dir.c_str(),
-                seconds, truth_file ? truth_file->path.c_str() : "sidecars");
+    std::printf("\n%zu scene%s of %s in %.1f s; truth: %s\n", runs.size(),
+                runs.size() == 1 ? "" : "s", options.dir.c_str(), seconds,
+                truth_sources(scenes, truth_file).c_str());
   }
   return 0;
 }

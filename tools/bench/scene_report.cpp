@@ -161,6 +161,7 @@ nlohmann::ordered_json scenes_json(const std::vector<SceneRun>& runs,
     nlohmann::ordered_json j;
     j["file"] = r.file;
     j["category"] = r.category;
+    j["truth"] = r.truth;
     j["points"] = r.points;
     j["organized"] = r.organized;
     j["wall_ms"] = r.wall_ms;

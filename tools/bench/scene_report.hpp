@@ -17,6 +17,7 @@ namespace cloudshape::bench {
 struct SceneRun {
   std::string file;  // the file name, without the directory
   std::string category;
+  std::string truth;       // the truth file or sidecar its expected shapes came from
   std::size_t points = 0;  // finite points given to recognize_cloud
   bool organized = false;
   std::vector<std::string> reported_shapes;  // per reported object, in its order

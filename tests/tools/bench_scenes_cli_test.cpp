@@ -1,0 +1,194 @@
+// cloudshape-bench --scenes as a user runs it: a synthetic labelled scene with a sidecar, two
+// real mOSD frames under the default truth, and every bad input refused with exit status 2.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "process.hpp"
+
+namespace cloudshape {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using testing::run_process;
+
+const std::string kBin = CLOUDSHAPE_BENCH_BIN;
+
+bool ci_run() {
+  const char* ci = std::getenv("CI");
+  return ci != nullptr && (std::string(ci) == "true" || std::string(ci) == "1");
+}
+
+struct Labelled {
+  double x, y, z;
+  int label;
+};
+
+// A 60 cm table (label 1) with a 10 x 8 x 6 cm box (label 20) on it, its five visible faces
+// sampled every 5 mm: an unorganized labelled cloud.
+std::vector<Labelled> box_on_table() {
+  constexpr double step = 0.005;
+  constexpr int a = 10, b = 8, h = 12;  // half length, half width, height in steps
+  std::vector<Labelled> pts;
+  for (int i = -60; i < 60; ++i)
+    for (int j = -60; j < 60; ++j) {
+      if (std::abs(i) > a || std::abs(j) > b) pts.push_back({step * i, step * j, 0.0, 1});
+    }
+  for (int i = -a; i <= a; ++i)
+    for (int j = -b; j <= b; ++j) pts.push_back({step * i, step * j, step * h, 20});
+  for (int k = 1; k < h; ++k) {
+    for (int i = -a; i <= a; ++i) {
+      pts.push_back({step * i, -step * b, step * k, 20});
+      pts.push_back({step * i, step * b, step * k, 20});
+    }
+    for (int j = -b + 1; j < b; ++j) {
+      pts.push_back({-step * a, step * j, step * k, 20});
+      pts.push_back({step * a, step * j, step * k, 20});
+    }
+  }
+  return pts;
+}
+
+int points_labelled(const std::vector<Labelled>& pts, int label) {
+  return static_cast<int>(std::count_if(pts.begin(), pts.end(), [&](const Labelled& p) { return p.label == label; }));
+}
+
+void write_labelled_pcd(const fs::path& path, const std::vector<Labelled>& pts) {
+  std::ofstream f(path);
+  f << "VERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH "
+    << pts.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << pts.size() << "\nDATA ascii\n";
+  for (const auto& p : pts) f << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.label << '\n';
+}
+
+void write_plain_pcd(const fs::path& path) {
+  std::ofstream f(path);
+  f << "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 3\nHEIGHT 1\n"
+       "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 3\nDATA ascii\n0 0 0\n1 0 0\n0 1 0\n";
+}
+
+class BenchScenes : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string tmpl = (fs::temp_directory_path() / "cloudshape-bench-scenes-XXXXXX").string();
+    ASSERT_NE(mkdtemp(tmpl.data()), nullptr);
+    dir_ = tmpl;
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path sub(const std::string& name) {
+    fs::create_directories(dir_ / name);
+    return dir_ / name;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(BenchScenes, SidecarSceneIsScoredAndAnUnlabelledCloudSkipped) {
+  const fs::path d = sub("synthetic");
+  const std::vector<Labelled> scene = box_on_table();
+  write_labelled_pcd(d / "box_on_table.pcd", scene);
+  std::ofstream(d / "box_on_table.truth.json") << R"({"category": "box_on_table", "groups": {"20": "box"}})";
+  write_plain_pcd(d / "plain.pcd");
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("plain.pcd: skipped (no label field)"), std::string::npos) << run.err;
+  const Json out = Json::parse(run.out);
+  ASSERT_EQ(out.at("rows").size(), 2u);
+  const Json& row = out.at("rows").at(0);
+  EXPECT_EQ(row.at("category"), "box_on_table");
+  EXPECT_EQ(row.at("scenes"), 1);
+  EXPECT_EQ(row.at("objects"), 1);
+  EXPECT_EQ(row.at("right").get<int>() + row.at("wrong_shape").get<int>() +
+                row.at("missed").get<int>(),
+            1);
+  const Json& scored = out.at("scenes").at(0);
+  EXPECT_EQ(scored.at("file"), "box_on_table.pcd");
+  EXPECT_EQ(scored.at("organized"), false);
+  EXPECT_EQ(scored.at("objects").at(0).at("points"), points_labelled(scene, 20));
+  EXPECT_GT(scored.at("wall_ms").get<double>(), 0.0);
+}
+
+TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
+  const fs::path learn = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / "mosd_learn";
+  if (!fs::exists(learn / "learn0.pcd") || !fs::exists(learn / "learn33.pcd")) {
+    const std::string why = "shared data missing: " + learn.string();
+    if (ci_run()) FAIL() << why << " (CI=true requires it)";
+    GTEST_SKIP() << why << " (skipped outside CI)";
+  }
+  const fs::path d = sub("mosd");
+  fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
+  fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  EXPECT_NE(out.at("settings").at("truth").get<std::string>().find("mosd_learn.truth.json"),
+            std::string::npos);
+  ASSERT_EQ(out.at("rows").size(), 3u);
+  // The labelled objects of the two frames (label groups of >= 50 points, SOURCES.md):
+  // learn0 two boxes (20, 30); learn33 five cans, three of them in two parts.
+  const std::vector<std::pair<std::string, int>> expected = {{"boxes", 2}, {"cylindric", 5}, {"all", 7}};
+  for (std::size_t k = 0; k < expected.size(); ++k) {
+    const Json& row = out.at("rows").at(k);
+    EXPECT_EQ(row.at("category"), expected[k].first);
+    EXPECT_EQ(row.at("objects"), expected[k].second);
+    EXPECT_EQ(row.at("right").get<int>() + row.at("wrong_shape").get<int>() +
+                  row.at("missed").get<int>(),
+              expected[k].second);
+  }
+  for (const auto& scene : out.at("scenes")) {
+    EXPECT_EQ(scene.at("organized"), true) << scene.at("file");
+    EXPECT_GT(scene.at("points").get<int>(), 100000) << scene.at("file");
+  }
+  const auto table = run_process({kBin, "--scenes", d.string()});
+  ASSERT_EQ(table.exit_code, 0) << table.err;
+  EXPECT_NE(table.out.find("cylindric"), std::string::npos) << table.out;
+  EXPECT_NE(table.out.find("2 scenes of"), std::string::npos) << table.out;
+}
+
+TEST_F(BenchScenes, BadInputIsRefusedNamingIt) {
+  const auto expect_refused = [](const std::vector<std::string>& args, const std::string& what) {
+    const auto run = run_process(args);
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_NE(run.err.find(what), std::string::npos) << run.err;
+  };
+  const std::string absent = (dir_ / "absent").string();
+  expect_refused({kBin, "--scenes", absent}, absent + " is not a directory");
+  const fs::path empty = sub("empty");
+  expect_refused({kBin, "--scenes", empty.string()}, "holds no .pcd file");
+
+  const fs::path unlabelled = sub("unlabelled");
+  write_plain_pcd(unlabelled / "plain.pcd");
+  expect_refused({kBin, "--scenes", unlabelled.string()}, "holds no labelled scene");
+
+  const fs::path orphan = sub("orphan");
+  write_labelled_pcd(orphan / "mine.pcd", box_on_table());
+  expect_refused({kBin, "--scenes", orphan.string()},
+                 (orphan / "mine.pcd").string() + ": a labelled scene without truth");
+
+  const std::string bad_truth = (dir_ / "bad.json").string();
+  std::ofstream(bad_truth) << "{\"categories\": ";
+  expect_refused({kBin, "--scenes", orphan.string(), "--truth", bad_truth},
+                 "truth file " + bad_truth + ": not valid JSON");
+
+  std::ofstream(orphan / "mine.truth.json") << R"({"groups": {"30": "box"}})";
+  expect_refused({kBin, "--scenes", orphan.string()},
+                 "the truth gives no shape for object label 20");
+
+  const fs::path broken = sub("broken");
+  std::ofstream(broken / "cut.pcd") << "VERSION 0.7\nFIELDS x y z label\n";
+  std::ofstream(broken / "cut.truth.json") << R"({"groups": {"20": "box"}})";
+  expect_refused({kBin, "--scenes", broken.string()}, (broken / "cut.pcd").string());
+
+  expect_refused({kBin, "--scenes", empty.string(), "--accuracy"}, "excludes");
+}
+
+}  // namespace
+}  // namespace cloudshape
