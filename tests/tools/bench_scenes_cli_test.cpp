@@ -58,13 +58,15 @@ std::vector<Labelled> box_on_table() {
 }
 
 int points_labelled(const std::vector<Labelled>& pts, int label) {
-  return static_cast<int>(std::count_if(pts.begin(), pts.end(), [&](const Labelled& p) { return p.label == label; }));
+  return static_cast<int>(
+      std::count_if(pts.begin(), pts.end(), [&](const Labelled& p) { return p.label == label; }));
 }
 
 void write_labelled_pcd(const fs::path& path, const std::vector<Labelled>& pts) {
   std::ofstream f(path);
   f << "VERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\nWIDTH "
-    << pts.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << pts.size() << "\nDATA ascii\n";
+    << pts.size() << "\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " << pts.size()
+    << "\nDATA ascii\n";
   for (const auto& p : pts) f << p.x << ' ' << p.y << ' ' << p.z << ' ' << p.label << '\n';
 }
 
@@ -95,7 +97,8 @@ TEST_F(BenchScenes, SidecarSceneIsScoredAndAnUnlabelledCloudSkipped) {
   const fs::path d = sub("synthetic");
   const std::vector<Labelled> scene = box_on_table();
   write_labelled_pcd(d / "box_on_table.pcd", scene);
-  std::ofstream(d / "box_on_table.truth.json") << R"({"category": "box_on_table", "groups": {"20": "box"}})";
+  std::ofstream(d / "box_on_table.truth.json")
+      << R"({"category": "box_on_table", "groups": {"20": "box"}})";
   write_plain_pcd(d / "plain.pcd");
   const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -106,9 +109,9 @@ TEST_F(BenchScenes, SidecarSceneIsScoredAndAnUnlabelledCloudSkipped) {
   EXPECT_EQ(row.at("category"), "box_on_table");
   EXPECT_EQ(row.at("scenes"), 1);
   EXPECT_EQ(row.at("objects"), 1);
-  EXPECT_EQ(row.at("right").get<int>() + row.at("wrong_shape").get<int>() +
-                row.at("missed").get<int>(),
-            1);
+  EXPECT_EQ(
+      row.at("right").get<int>() + row.at("wrong_shape").get<int>() + row.at("missed").get<int>(),
+      1);
   const Json& scored = out.at("scenes").at(0);
   EXPECT_EQ(scored.at("file"), "box_on_table.pcd");
   EXPECT_EQ(scored.at("organized"), false);
@@ -134,14 +137,15 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   ASSERT_EQ(out.at("rows").size(), 3u);
   // The labelled objects of the two frames (label groups of >= 50 points, SOURCES.md):
   // learn0 two boxes (20, 30); learn33 five cans, three of them in two parts.
-  const std::vector<std::pair<std::string, int>> expected = {{"boxes", 2}, {"cylindric", 5}, {"all", 7}};
+  const std::vector<std::pair<std::string, int>> expected = {
+      {"boxes", 2}, {"cylindric", 5}, {"all", 7}};
   for (std::size_t k = 0; k < expected.size(); ++k) {
     const Json& row = out.at("rows").at(k);
     EXPECT_EQ(row.at("category"), expected[k].first);
     EXPECT_EQ(row.at("objects"), expected[k].second);
-    EXPECT_EQ(row.at("right").get<int>() + row.at("wrong_shape").get<int>() +
-                  row.at("missed").get<int>(),
-              expected[k].second);
+    EXPECT_EQ(
+        row.at("right").get<int>() + row.at("wrong_shape").get<int>() + row.at("missed").get<int>(),
+        expected[k].second);
   }
   for (const auto& scene : out.at("scenes")) {
     EXPECT_EQ(scene.at("organized"), true) << scene.at("file");

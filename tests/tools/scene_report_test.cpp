@@ -16,7 +16,7 @@ SceneRun run(const std::string& category, int right, int wrong, int missed, int 
   for (int k = 0; k < right + wrong + missed; ++k) {
     ObjectScore o;
     o.object = static_cast<std::uint32_t>(2 + k);
-    o.outcome = k < right ? ObjectOutcome::right
+    o.outcome = k < right           ? ObjectOutcome::right
                 : k < right + wrong ? ObjectOutcome::wrong_shape
                                     : ObjectOutcome::missed;
     if (o.outcome == ObjectOutcome::wrong_shape) o.reported_shapes = {"cone"};
@@ -31,10 +31,9 @@ SceneRun run(const std::string& category, int right, int wrong, int missed, int 
 }
 
 TEST(SceneReport, RowsSumPerCategoryInTheTruthOrderThenAll) {
-  const std::vector<SceneRun> runs = {run("cylindric", 1, 1, 0, 1, 30.0, {0.5, 0.7}),
-                                      run("boxes", 2, 0, 1, 0, 10.0, {}),
-                                      run("cylindric", 0, 0, 2, 2, 50.0, {}),
-                                      run("other", 1, 0, 0, 0, 20.0, {0.9})};
+  const std::vector<SceneRun> runs = {
+      run("cylindric", 1, 1, 0, 1, 30.0, {0.5, 0.7}), run("boxes", 2, 0, 1, 0, 10.0, {}),
+      run("cylindric", 0, 0, 2, 2, 50.0, {}), run("other", 1, 0, 0, 0, 20.0, {0.9})};
   const auto rows = tally_scenes(runs, {"boxes", "stacked_boxes", "cylindric"});
   ASSERT_EQ(rows.size(), 4u);
   EXPECT_EQ(rows[0].first, "boxes");

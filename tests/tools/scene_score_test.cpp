@@ -1,5 +1,5 @@
 // The scene scorer against hand-made answers on a hand-made labelled scene: right, wrong shape,
-// missed, false, duplicate, table, a two-part object found by one part, a known IoU, the centre rule.
+// missed, false, duplicate, table, an object found by one of two parts, a known IoU, centre rule.
 #include <gtest/gtest.h>
 
 #include <stdexcept>
@@ -17,7 +17,8 @@ struct Scene {
   std::vector<std::uint32_t> labels;
   std::map<std::uint32_t, std::vector<std::uint32_t>> of;  // label -> its point indices
 
-  void add(std::uint32_t label, const Eigen::Vector3d& centre, int nx, int ny, int nz, double side) {
+  void add(std::uint32_t label, const Eigen::Vector3d& centre, int nx, int ny, int nz,
+           double side) {
     for (int i = 0; i < nx; ++i) {
       for (int j = 0; j < ny; ++j) {
         for (int k = 0; k < nz; ++k) {
@@ -102,9 +103,9 @@ TEST(SceneScore, ObjectsAreTheLabelledObjectsWithTheirPartsAndNoFragments) {
 
 TEST(SceneScore, RightWrongShapeAndMissed) {
   const Scene s = make_scene();
-  const SceneScore score = score_scene(s.points, s.labels, truth_boxes_and_a_can(),
-                                       {by_points("box", s.take(20)),
-                                        by_points("cylinder", s.take(30))});
+  const SceneScore score =
+      score_scene(s.points, s.labels, truth_boxes_and_a_can(),
+                  {by_points("box", s.take(20)), by_points("cylinder", s.take(30))});
   EXPECT_EQ(object(score, 2).outcome, ObjectOutcome::right);
   EXPECT_EQ(object(score, 3).outcome, ObjectOutcome::wrong_shape);
   EXPECT_EQ(object(score, 3).reported_shapes, (std::vector<std::string>{"cylinder"}));
@@ -132,8 +133,9 @@ TEST(SceneScore, AReportWithoutAMajorityLabelIsFalseAndTheTableIsNot) {
 TEST(SceneScore, ASecondReportOnOneGroupIsADuplicateAndTheLargerOverlapWins) {
   const Scene s = make_scene();
   std::vector<std::uint32_t> rest(s.of.at(20).begin() + 150, s.of.at(20).end());
-  const SceneScore score = score_scene(s.points, s.labels, truth_boxes_and_a_can(),
-                                       {by_points("cone", rest), by_points("box", s.take(20, 150))});
+  const SceneScore score =
+      score_scene(s.points, s.labels, truth_boxes_and_a_can(),
+                  {by_points("cone", rest), by_points("box", s.take(20, 150))});
   EXPECT_EQ(score.reports[0].kind, ReportKind::duplicate);
   EXPECT_EQ(score.reports[1].kind, ReportKind::match);
   EXPECT_EQ(score.duplicates, 1);
@@ -144,13 +146,14 @@ TEST(SceneScore, ASecondReportOnOneGroupIsADuplicateAndTheLargerOverlapWins) {
 
 TEST(SceneScore, ATwoPartObjectIsFoundByOnePartAndItsOtherPartIsNoDuplicate) {
   const Scene s = make_scene();
-  const SceneScore one = score_scene(s.points, s.labels, truth_boxes_and_a_can(),
-                                     {by_points("cylinder", s.take(41))});
+  const SceneScore one =
+      score_scene(s.points, s.labels, truth_boxes_and_a_can(), {by_points("cylinder", s.take(41))});
   EXPECT_EQ(object(one, 4).outcome, ObjectOutcome::right);
   EXPECT_EQ(one.right, 1);
 
-  const SceneScore both = score_scene(s.points, s.labels, truth_boxes_and_a_can(),
-                                      {by_points("cylinder", s.take(41)), by_points("box", s.take(40))});
+  const SceneScore both =
+      score_scene(s.points, s.labels, truth_boxes_and_a_can(),
+                  {by_points("cylinder", s.take(41)), by_points("box", s.take(40))});
   EXPECT_EQ(object(both, 4).outcome, ObjectOutcome::right);  // one part has the accepted shape
   EXPECT_EQ(both.duplicates, 0);
   EXPECT_EQ(both.false_objects, 0);
@@ -215,10 +218,14 @@ TEST(SceneScore, CentreRuleRejectsAnOversizedSolidAndFarCentres) {
        // 0.5 m above the table: nothing.
        by_centre("box", {0.0, 0.0, 0.5}, 0.1),
        // On the table, 5 cm across: too small to be the table, near no object: false.
-       by_centre("box", {-0.3, -0.3, 0.02}, 0.05)});
+       by_centre("box", {-0.3, -0.3, 0.02}, 0.05),
+       // 40 cm across, 10 cm over the table: too large for any object, under half the table.
+       by_centre("cylinder", {-0.3, -0.3, 0.1}, 0.4)});
   EXPECT_EQ(score.reports[0].kind, ReportKind::table);
   EXPECT_EQ(score.reports[1].kind, ReportKind::false_object);
   EXPECT_EQ(score.reports[2].kind, ReportKind::false_object);
+  EXPECT_EQ(score.reports[3].kind, ReportKind::false_object);
+  EXPECT_EQ(score.false_objects, 3);
   EXPECT_EQ(score.missed, 3);
 }
 

@@ -59,7 +59,9 @@ TEST_F(SceneTruthFiles, MosdLearnTruthFollowsSourcesMd) {
   EXPECT_EQ(t.category_order,
             (std::vector<std::string>{"boxes", "stacked_boxes", "occluded", "cylindric"}));
   ASSERT_EQ(t.scene_category.size(), 45u);
-  const auto shapes = [&](int n) { return t.scene("learn" + std::to_string(n) + ".pcd")->default_shapes; };
+  const auto shapes = [&](int n) {
+    return t.scene("learn" + std::to_string(n) + ".pcd")->default_shapes;
+  };
   for (int n = 0; n <= 24; ++n) EXPECT_EQ(shapes(n), std::vector<std::string>{"box"}) << n;
   for (int n = 25; n <= 32; ++n)
     EXPECT_EQ(shapes(n), (std::vector<std::string>{"box", "cylinder"})) << n;
@@ -83,8 +85,9 @@ TEST_F(SceneTruthFiles, MalformedTruthFilesAreRefusedWithTheFault) {
   EXPECT_NE(truth_error("{\"categories\": {\"x\": \"box\"}, \"scenes\": {\"a.pcd\": \"y\"}}")
                 .find("category 'y' is not in"),
             std::string::npos);
-  EXPECT_NE(truth_error("{\"categories\": {\"x\": \"box\"}, \"scenes\": {}}").find("lists no scene"),
-            std::string::npos);
+  EXPECT_NE(
+      truth_error("{\"categories\": {\"x\": \"box\"}, \"scenes\": {}}").find("lists no scene"),
+      std::string::npos);
   EXPECT_EQ(truth_error("{\"categories\": {\"x\": \"box\"}, \"scenes\": {\"a.pcd\": \"x\"}}"), "");
   try {
     load_truth_file((dir_ / "absent.json").string());
@@ -97,14 +100,16 @@ TEST_F(SceneTruthFiles, MalformedTruthFilesAreRefusedWithTheFault) {
 TEST_F(SceneTruthFiles, SidecarGivesEachObjectItsShapes) {
   const std::string path =
       write("scene.truth.json",
-            R"({"category": "touching", "groups": {"20": "box", "30": ["cylinder", "box"], "31": ["box", "cylinder"]}})");
+            R"({"category": "touching", "groups": {"20": "box", "30": ["cylinder", "box"],)"
+            R"( "31": ["box", "cylinder"]}})");
   const SceneTruth t = load_sidecar(path, "fallback");
   EXPECT_EQ(t.category, "touching");
   EXPECT_EQ(t.accepted_shapes(2), std::vector<std::string>{"box"});
   EXPECT_EQ(t.accepted_shapes(3), (std::vector<std::string>{"box", "cylinder"}));
   EXPECT_TRUE(t.accepted_shapes(4).empty());
-  EXPECT_EQ(load_sidecar(write("b.truth.json", R"({"groups": {"20": "box"}})"), "fallback").category,
-            "fallback");
+  EXPECT_EQ(
+      load_sidecar(write("b.truth.json", R"({"groups": {"20": "box"}})"), "fallback").category,
+      "fallback");
   EXPECT_EQ(sidecar_path("/a/b/learn3.pcd"), "/a/b/learn3.truth.json");
 }
 

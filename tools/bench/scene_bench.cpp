@@ -2,6 +2,7 @@
 // every labelled scene in turn (one frame in memory at a time), then prints the tallies.
 #include "scene_bench.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -9,7 +10,6 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
-#include <unistd.h>
 
 #include "io/cloud_reader.hpp"
 #include "pipeline/recognize.hpp"
@@ -31,7 +31,8 @@ bool natural_less(const std::string& a, const std::string& b) {
   std::size_t i = 0;
   std::size_t j = 0;
   while (i < a.size() && j < b.size()) {
-    if (std::isdigit(static_cast<unsigned char>(a[i])) && std::isdigit(static_cast<unsigned char>(b[j]))) {
+    if (std::isdigit(static_cast<unsigned char>(a[i])) &&
+        std::isdigit(static_cast<unsigned char>(b[j]))) {
       std::size_t ei = i;
       std::size_t ej = j;
       while (ei < a.size() && std::isdigit(static_cast<unsigned char>(a[ei]))) ++ei;
@@ -57,7 +58,8 @@ std::vector<fs::path> scene_files(const std::string& dir) {
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext == ".pcd" && entry.is_regular_file()) files.push_back(entry.path());
   }
   if (ec) throw InputError{"--scenes: " + dir + ": cannot be listed (" + ec.message() + ")"};
@@ -102,7 +104,8 @@ SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg) {
   const SceneTruth& truth = scene.truth;
   const io::CloudFile cloud = read_scene(path);
   if (cloud.labels.empty())
-    throw InputError{path.string() + ": no label field, but the truth lists it as a labelled scene"};
+    throw InputError{path.string() +
+                     ": no label field, but the truth lists it as a labelled scene"};
   SceneRun run;
   run.file = path.filename().string();
   run.category = truth.category;
@@ -180,14 +183,14 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const auto rows = tally_scenes(runs, truth_file ? truth_file->category_order
-                                                  : std::vector<std::string>{});
+  const auto rows =
+      tally_scenes(runs, truth_file ? truth_file->category_order : std::vector<std::string>{});
   if (options.per_scene) print_scene_lines(runs, stderr);
   if (options.json) {
     nlohmann::ordered_json settings;
     settings["dir"] = options.dir;
-    settings["truth"] = truth_file ? nlohmann::ordered_json(truth_file->path)
-                                   : nlohmann::ordered_json(nullptr);
+    settings["truth"] =
+        truth_file ? nlohmann::ordered_json(truth_file->path) : nlohmann::ordered_json(nullptr);
     settings["config"] = options.config_label;
     settings["min_group_points"] = kMinGroupPoints;
     settings["seconds"] = seconds;

@@ -45,7 +45,8 @@ std::string iou_text(const SceneTally& t) {
 
 std::string wrong_as_text(const std::map<std::string, int>& wrong_as) {
   std::string s;
-  for (const auto& [shape, n] : wrong_as) s += (s.empty() ? "" : ", ") + shape + " " + std::to_string(n);
+  for (const auto& [shape, n] : wrong_as)
+    s += (s.empty() ? "" : ", ") + shape + " " + std::to_string(n);
   return s.empty() ? "-" : s;
 }
 
@@ -62,7 +63,8 @@ nlohmann::ordered_json row_json(const std::string& category, const SceneTally& t
   j["false_per_scene"] = per_scene(t.false_objects, t.scenes);
   j["duplicates"] = t.duplicates;
   j["table_objects"] = t.table;
-  j["iou_mean"] = t.ious.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(mean_of(t.ious));
+  j["iou_mean"] =
+      t.ious.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(mean_of(t.ious));
   j["iou_objects"] = t.ious.size();
   j["wall_ms"] = {{"median", median_of(t.wall_ms)}, {"max", max_of(t.wall_ms)}};
   j["total_ms"] = {{"median", median_of(t.total_ms)}, {"max", max_of(t.total_ms)}};
@@ -111,10 +113,9 @@ void print_scene_table(const std::vector<std::pair<std::string, SceneTally>>& ro
                "not the table. dup: a second report on one label group. table: reports on the "
                "table.\nIoU: mean point overlap of matched objects (n/a without point indices). "
                "ms: per frame, pipeline total and wall clock (median / max).\n\n");
-  std::fprintf(out, "%-14s %6s %7s %6s %7s %6s %6s %6s %7s %5s %6s %6s %15s %15s  %s\n",
-               "category", "scenes", "objects", "right", "right%", "wrong", "missed", "false",
-               "false/s", "dup", "table", "IoU", "total ms med/max", "wall ms med/max",
-               "wrong as");
+  std::fprintf(out, "%-14s %6s %7s %6s %7s %6s %6s %6s %7s %5s %6s %6s %15s %15s  %s\n", "category",
+               "scenes", "objects", "right", "right%", "wrong", "missed", "false", "false/s", "dup",
+               "table", "IoU", "total ms med/max", "wall ms med/max", "wrong as");
   for (const auto& [category, t] : rows) {
     char total[32];
     char wall[32];
@@ -183,7 +184,8 @@ nlohmann::ordered_json scenes_json(const std::vector<SceneRun>& runs,
       nlohmann::ordered_json rj;
       rj["shape"] = r.reported_shapes[k];
       rj["kind"] = to_string(s.kind);
-      rj["label"] = s.label != 0 ? nlohmann::ordered_json(s.label) : nlohmann::ordered_json(nullptr);
+      rj["label"] =
+          s.label != 0 ? nlohmann::ordered_json(s.label) : nlohmann::ordered_json(nullptr);
       rj["by_centre"] = s.by_centre;
       if (!s.by_centre) rj["share"] = s.share;
       j["reports"].push_back(rj);

@@ -49,8 +49,7 @@ std::vector<std::pair<std::string, SceneTally>> tally_scenes(
 double median_of(std::vector<double> v);
 double max_of(const std::vector<double>& v);
 
-void print_scene_table(const std::vector<std::pair<std::string, SceneTally>>& rows,
-                       std::FILE* out);
+void print_scene_table(const std::vector<std::pair<std::string, SceneTally>>& rows, std::FILE* out);
 // One line per scene: what was labelled, what came out, how it was counted.
 void print_scene_lines(const std::vector<SceneRun>& runs, std::FILE* out);
 

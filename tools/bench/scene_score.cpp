@@ -106,7 +106,7 @@ Placement place_by_centre(const ReportedObject& r, const PointList& points,
   }
   if (!table.indices.empty()) {
     const double d = nearest_distance(points, table.indices, r.center);
-    if (fits(d, r.diameter, table) && (r.diameter <= 0.0 || r.diameter >= 0.25 * table.size))
+    if (fits(d, r.diameter, table) && (r.diameter <= 0.0 || r.diameter >= 0.5 * table.size))
       p.score.kind = ReportKind::table;
   }
   return p;
@@ -140,20 +140,28 @@ ReportedObject reported_object(const pipeline::ObjectResult& r) {
 
 const char* to_string(ReportKind k) {
   switch (k) {
-    case ReportKind::match: return "match";
-    case ReportKind::duplicate: return "duplicate";
-    case ReportKind::table: return "table";
-    case ReportKind::ignored_group: return "ignored_group";
-    case ReportKind::false_object: return "false_object";
+    case ReportKind::match:
+      return "match";
+    case ReportKind::duplicate:
+      return "duplicate";
+    case ReportKind::table:
+      return "table";
+    case ReportKind::ignored_group:
+      return "ignored_group";
+    case ReportKind::false_object:
+      return "false_object";
   }
   return "?";
 }
 
 const char* to_string(ObjectOutcome o) {
   switch (o) {
-    case ObjectOutcome::right: return "right";
-    case ObjectOutcome::wrong_shape: return "wrong_shape";
-    case ObjectOutcome::missed: return "missed";
+    case ObjectOutcome::right:
+      return "right";
+    case ObjectOutcome::wrong_shape:
+      return "wrong_shape";
+    case ObjectOutcome::missed:
+      return "missed";
   }
   return "?";
 }
@@ -241,14 +249,16 @@ SceneScore score_scene(const PointList& points, const std::vector<std::uint32_t>
       if (std::find(accepted.begin(), accepted.end(), reported[k].shape) != accepted.end())
         o.outcome = ObjectOutcome::right;
     }
-    if (!matched.empty() && o.outcome != ObjectOutcome::right) o.outcome = ObjectOutcome::wrong_shape;
+    if (!matched.empty() && o.outcome != ObjectOutcome::right)
+      o.outcome = ObjectOutcome::wrong_shape;
     score.right += o.outcome == ObjectOutcome::right;
     score.wrong_shape += o.outcome == ObjectOutcome::wrong_shape;
     score.missed += o.outcome == ObjectOutcome::missed;
 
-    const bool measurable = !matched.empty() && std::all_of(matched.begin(), matched.end(), [&](std::size_t k) {
-      return !reported[k].point_indices.empty();
-    });
+    const bool measurable =
+        !matched.empty() && std::all_of(matched.begin(), matched.end(), [&](std::size_t k) {
+          return !reported[k].point_indices.empty();
+        });
     if (!measurable) continue;
     std::vector<std::uint32_t> seg;
     for (const auto k : matched)

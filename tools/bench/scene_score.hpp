@@ -71,12 +71,14 @@ struct SceneScore {
 // - Groups: every label >= 20 with at least kMinGroupPoints points is a part; the parts of one
 //   object (same label / 10) are one labelled object. Labels 1-9 together are the table.
 // - A report with point_indices falls on the label that holds more than half of its (distinct)
-//   points; without such a label it is a false object.
+//   points: an object part (a match), the table, or a fragment under the floor (not scored);
+//   without such a label, or on label 0 / 10-19, it is a false object.
 // - A report without point_indices falls by its centre: on the object part whose nearest point
 //   is closest to the centre, if that distance is at most half the part's size and the report's
 //   diameter at most twice that size (size = sqrt(12) x the RMS distance of the part's points
 //   from their centroid: a filled box's diagonal); else on the table under the same two tests
-//   and a diameter of at least a quarter of the table's size; else it is a false object.
+//   and a diameter of at least half the table's size (a report that is the table spans much
+//   of it); else it is a false object.
 // - A part matched by several reports keeps the one sharing most points with it (by centre:
 //   the nearest); the others are duplicates. An object is right when any report matched to
 //   any of its parts has an accepted shape, wrong_shape when matched but none has, else

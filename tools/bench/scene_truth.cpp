@@ -16,9 +16,9 @@ using Json = nlohmann::ordered_json;
 
 // INTERFACE.md's shape names (prism and frustum included).
 const std::vector<std::string>& known_shapes() {
-  static const std::vector<std::string> names = {
-      "box",      "tetrahedron", "pentagonal_prism", "cone",   "cylinder",
-      "sphere",   "prism",       "frustum",          "unknown"};
+  static const std::vector<std::string> names = {"box",   "tetrahedron", "pentagonal_prism",
+                                                 "cone",  "cylinder",    "sphere",
+                                                 "prism", "frustum",     "unknown"};
   return names;
 }
 
@@ -39,7 +39,8 @@ Json parse_file(const std::string& path) {
 }
 
 // One shape name or a non-empty list of them, each a known shape.
-std::vector<std::string> shapes_of(const Json& j, const std::string& path, const std::string& what) {
+std::vector<std::string> shapes_of(const Json& j, const std::string& path,
+                                   const std::string& what) {
   std::vector<std::string> shapes;
   if (j.is_string()) {
     shapes.push_back(j.get<std::string>());
@@ -79,8 +80,9 @@ std::uint32_t parse_label(const std::string& key, const std::string& path) {
     fail(path, "groups: '" + key + "' is not a label number");
   const auto label = static_cast<std::uint32_t>(value);
   if (!is_object_label(label))
-    fail(path, "groups: label " + key + " is not an object label (objects are >= 20; 1-9 are "
-                                        "the table, 0 invalid)");
+    fail(path, "groups: label " + key +
+                   " is not an object label (objects are >= 20; 1-9 are "
+                   "the table, 0 invalid)");
   return label;
 }
 
