@@ -13,6 +13,7 @@ SceneRun run(const std::string& category, int right, int wrong, int missed, int 
   r.category = category;
   r.wall_ms = wall_ms;
   r.total_ms = wall_ms - 1.0;
+  r.cpu_ms = wall_ms - 2.0;
   for (int k = 0; k < right + wrong + missed; ++k) {
     ObjectScore o;
     o.object = static_cast<std::uint32_t>(2 + k);
@@ -59,6 +60,7 @@ TEST(SceneReport, RowsSumPerCategoryInTheTruthOrderThenAll) {
   EXPECT_EQ(all.ious.size(), 3u);
   EXPECT_DOUBLE_EQ(median_of(all.wall_ms), 25.0);
   EXPECT_DOUBLE_EQ(median_of(all.total_ms), 24.0);
+  EXPECT_DOUBLE_EQ(max_of(all.cpu_ms), 48.0);
 }
 
 TEST(SceneReport, JsonCarriesFalsePerSceneAndNullIouWhenNothingWasMeasured) {

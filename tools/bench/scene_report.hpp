@@ -24,6 +24,7 @@ struct SceneRun {
   SceneScore score;
   double wall_ms = 0.0;   // wall clock around recognize_cloud
   double total_ms = 0.0;  // the result's own timings.total_ms
+  double cpu_ms = 0.0;    // process CPU time around recognize_cloud: steady on a shared machine
 };
 
 struct SceneTally {
@@ -38,6 +39,7 @@ struct SceneTally {
   std::vector<double> ious;  // per matched object with point indices
   std::vector<double> wall_ms;
   std::vector<double> total_ms;
+  std::vector<double> cpu_ms;
   std::map<std::string, int> wrong_as;  // reported shape of wrong-shape objects -> count
 };
 
