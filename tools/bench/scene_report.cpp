@@ -119,7 +119,8 @@ void print_scene_table(const std::vector<std::pair<std::string, SceneTally>>& ro
                "objects: labelled objects (the parts of one occluded object count once). right: "
                "a report on it has an accepted shape.\nfalse: reports on no labelled object and "
                "not the table. dup: a second report on one label group. table: reports on the "
-               "table.\nIoU: mean point overlap of matched objects (n/a without point indices). "
+               "table (or other structure: labels 1-9).\nIoU: mean point overlap of matched "
+               "objects (n/a without point indices). "
                "ms per frame (median/max): the pipeline's total, wall clock, CPU time.\n\n");
   std::fprintf(out, "%-14s %6s %7s %6s %7s %6s %6s %6s %7s %5s %6s %6s %9s %9s %9s  %s\n",
                "category", "scenes", "objects", "right", "right%", "wrong", "missed", "false",
