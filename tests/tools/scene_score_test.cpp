@@ -163,6 +163,19 @@ TEST(SceneScore, ATwoPartObjectIsFoundByOnePartAndItsOtherPartIsNoDuplicate) {
   EXPECT_NEAR(object(both, 4).iou, 1.0, 1e-12);
 }
 
+TEST(SceneScore, AReportJoiningBothPartsOfAnObjectIsThatObject) {
+  const Scene s = make_scene();
+  // 100 points on each part and 60 on 20: neither part holds half, the object does (200/260).
+  const SceneScore score =
+      score_scene(s.points, s.labels, truth_boxes_and_a_can(),
+                  {by_points("cylinder", join(join(s.take(40), s.take(41)), s.take(20, 60)))});
+  EXPECT_EQ(score.reports[0].kind, ReportKind::match);
+  EXPECT_EQ(object(score, 4).outcome, ObjectOutcome::right);
+  EXPECT_EQ(object(score, 2).outcome, ObjectOutcome::missed);
+  EXPECT_EQ(score.false_objects, 0);
+  EXPECT_NEAR(object(score, 4).iou, 200.0 / 260.0, 1e-12);
+}
+
 TEST(SceneScore, IouOfAKnownOverlap) {
   const Scene s = make_scene();
   // 150 of the 200 points of 20 plus 50 table points: 150 / (200 + 200 - 150).

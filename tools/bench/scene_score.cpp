@@ -7,7 +7,6 @@
 #include <limits>
 #include <map>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace cloudshape::bench {
 
@@ -49,30 +48,42 @@ struct Placement {
   double rank = 0.0;  // larger is a better claim on the group
 };
 
+// What a label votes for: its object (all parts together: a report joining an occluded
+// object's pieces is that object), the table (labels 1-9 as one), or itself.
+std::uint32_t voter(std::uint32_t label) {
+  if (is_object_label(label)) return object_of_label(label);
+  return is_structure_label(label) ? 1 : label;
+}
+
 Placement place_by_points(const ReportedObject& r, const std::vector<std::uint32_t>& labels,
                           const std::map<std::uint32_t, Group>& parts) {
   std::vector<std::uint32_t> idx = r.point_indices;
   std::sort(idx.begin(), idx.end());
   idx.erase(std::unique(idx.begin(), idx.end()), idx.end());
-  std::unordered_map<std::uint32_t, std::size_t> votes;
-  for (const auto i : idx) ++votes[labels[i]];
-  std::uint32_t label = 0;
-  std::size_t most = 0;
-  for (const auto& [l, n] : votes) {
-    if (n > most || (n == most && l < label)) {
-      label = l;
-      most = n;
+  std::map<std::uint32_t, std::size_t> per_label;
+  for (const auto i : idx) ++per_label[labels[i]];
+  // Object votes are kept apart from the others: object 1 would otherwise be the table.
+  std::map<std::pair<bool, std::uint32_t>, std::size_t> votes;
+  for (const auto& [l, n] : per_label) votes[{is_object_label(l), voter(l)}] += n;
+  const auto top = std::max_element(
+      votes.begin(), votes.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  Placement p;
+  p.score.share = static_cast<double>(top->second) / static_cast<double>(idx.size());
+  if (2 * top->second <= idx.size()) return p;  // no majority: false object
+  const auto [is_object, who] = top->first;
+  if (!is_object) {
+    p.score.kind = who == 1 ? ReportKind::table : ReportKind::false_object;
+    return p;
+  }
+  // The object's part it shares most points with is the group it claims.
+  for (const auto& [l, n] : per_label) {
+    if (!is_object_label(l) || object_of_label(l) != who || parts.count(l) == 0) continue;
+    if (static_cast<double>(n) > p.rank) {
+      p.rank = static_cast<double>(n);
+      p.score.label = l;
     }
   }
-  Placement p;
-  p.score.share = static_cast<double>(most) / static_cast<double>(idx.size());
-  p.rank = static_cast<double>(most);
-  if (2 * most <= idx.size()) return p;  // no majority: false object
-  p.score.label = label;
-  p.score.kind = is_structure_label(label) ? ReportKind::table
-                 : !is_object_label(label) ? ReportKind::false_object
-                 : parts.count(label) > 0  ? ReportKind::match
-                                           : ReportKind::ignored_group;
+  p.score.kind = p.score.label != 0 ? ReportKind::match : ReportKind::ignored_group;
   return p;
 }
 

@@ -70,9 +70,10 @@ struct SceneScore {
 // Scores `reported` against `labels` (one per point of `points`). Rules:
 // - Groups: every label >= 20 with at least kMinGroupPoints points is a part; the parts of one
 //   object (same label / 10) are one labelled object. Labels 1-9 together are the table.
-// - A report with point_indices falls on the label that holds more than half of its (distinct)
-//   points: an object part (a match), the table, or a fragment under the floor (not scored);
-//   without such a label, or on label 0 / 10-19, it is a false object.
+// - A report with point_indices falls on what holds more than half of its (distinct) points:
+//   an object (all its parts together; it then claims the part it shares most points with),
+//   the table, or only parts under the floor (not scored); without such a majority, or with
+//   one of label 0 / 10-19, it is a false object.
 // - A report without point_indices falls by its centre: on the object part whose nearest point
 //   is closest to the centre, if that distance is at most half the part's size and the report's
 //   diameter at most twice that size (size = sqrt(12) x the RMS distance of the part's points
