@@ -119,6 +119,19 @@ TEST_F(BenchScenes, SidecarSceneIsScoredAndAnUnlabelledCloudSkipped) {
   EXPECT_GT(scored.at("wall_ms").get<double>(), 0.0);
 }
 
+TEST_F(BenchScenes, ScenesRunInNaturalOrder) {
+  const fs::path d = sub("ordered");
+  for (const std::string name : {"s10", "s2", "s1"}) {
+    write_labelled_pcd(d / (name + ".pcd"), box_on_table());
+    std::ofstream(d / (name + ".truth.json")) << R"({"groups": {"20": "box"}})";
+  }
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::vector<std::string> order;
+  for (const auto& scene : Json::parse(run.out).at("scenes")) order.push_back(scene.at("file"));
+  EXPECT_EQ(order, (std::vector<std::string>{"s1.pcd", "s2.pcd", "s10.pcd"}));
+}
+
 TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   const fs::path learn = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / "mosd_learn";
   if (!fs::exists(learn / "learn0.pcd") || !fs::exists(learn / "learn33.pcd")) {
