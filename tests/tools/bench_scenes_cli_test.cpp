@@ -127,8 +127,9 @@ TEST_F(BenchScenes, ScenesRunInNaturalOrder) {
   }
   const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
   std::vector<std::string> order;
-  for (const auto& scene : Json::parse(run.out).at("scenes")) order.push_back(scene.at("file"));
+  for (const auto& scene : out.at("scenes")) order.push_back(scene.at("file"));
   EXPECT_EQ(order, (std::vector<std::string>{"s1.pcd", "s2.pcd", "s10.pcd"}));
 }
 
