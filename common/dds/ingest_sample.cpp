@@ -53,7 +53,7 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
 std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
   const RawCloudPoints raw = raw_cloud_points(in, cfg.input);
   const auto start = std::chrono::steady_clock::now();
-  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, cfg.preprocess);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, GridLayout{}, cfg.preprocess, cfg.segment);
   const std::vector<pipeline::ObjectCloud>& objects = clouds.objects;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::vector<msg::FilteredCloud> out;

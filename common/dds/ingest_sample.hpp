@@ -1,5 +1,5 @@
 // What cloudshape-ingest does with one received raw cloud, without DDS: check the sample (x y z
-// triples, limits, finite points), then preprocess_cloud and split_objects as recognize_cloud does.
+// triples, limits, finite points), then object_clouds as recognize_cloud does.
 #pragma once
 
 #include <stdexcept>

@@ -1,6 +1,6 @@
 // What ingest does with a received raw cloud (dds::ingest_raw_cloud): bad samples are refused with
 // a reason naming the problem, NaN points are dropped as the file readers drop them, and the rest
-// is exactly preprocess_cloud + split_objects.
+// is exactly object_clouds (segmentation, then preprocessing per object).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "dds/convert.hpp"
 #include "dds/ingest_sample.hpp"
 #include "dds/topics.hpp"
-#include "pipeline/split_objects.hpp"
+#include "pipeline/object_clouds.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
 
@@ -67,15 +67,15 @@ TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) 
   EXPECT_EQ(kept.points, finite);
 
   const config::PipelineConfig cfg;
-  const pipeline::PreprocessedCloud pre = pipeline::preprocess_cloud(finite, cfg.preprocess);
-  const auto objects = pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(finite, GridLayout{}, cfg.preprocess, cfg.segment);
+  const auto& objects = clouds.objects;
   ASSERT_EQ(out.size(), objects.size());
   ASSERT_EQ(out.size(), 1u);
   EXPECT_FALSE(out[0].header().error());
   EXPECT_EQ(out[0].header().object_count(), 1u);
   EXPECT_EQ(out[0].cloud().points_in(), finite.size());
-  EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0]);
-  EXPECT_EQ(out[0].cloud().resolution(), pre.resolution);
+  EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0].points);
+  EXPECT_EQ(out[0].cloud().resolution(), objects[0].resolution);
 }
 
 TEST(IngestSample, AllNonFiniteIsRefused) {
