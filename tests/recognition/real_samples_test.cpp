@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <ostream>
 #include <random>
 
 #include "config/pipeline_config.hpp"
@@ -46,6 +47,9 @@ const std::vector<Sample>& samples() {
   };
   return all;
 }
+
+// Names the sample in test listings instead of dumping its bytes.
+void PrintTo(const Sample& s, std::ostream* os) { *os << s.file; }
 
 class RealSample : public ::testing::TestWithParam<Sample> {};
 
