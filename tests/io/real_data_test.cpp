@@ -12,7 +12,7 @@
 namespace cloudshape::io {
 namespace {
 
-#define REQUIRE_REAL_FILE(var, relative)                                            \
+#define REQUIRE_REAL_FILE(var, relative)                                                      \
   const std::string var = ::cloudshape::testing::shared_data_path("real/" relative).string(); \
   CLOUDSHAPE_REQUIRE_SHARED_DATA(var)
 

@@ -34,10 +34,10 @@ inline std::string shared_data_missing(const std::filesystem::path& path) {
 // In a test body: stops the test when `path` (a file or folder of the shared data) is absent,
 // as a failure under CI and as a skip elsewhere. A macro because both must return from the
 // test itself.
-#define CLOUDSHAPE_REQUIRE_SHARED_DATA(path)                                              \
-  do {                                                                                    \
+#define CLOUDSHAPE_REQUIRE_SHARED_DATA(path)                                                  \
+  do {                                                                                        \
     const std::string cloudshape_missing_ = ::cloudshape::testing::shared_data_missing(path); \
-    if (cloudshape_missing_.empty()) break;                                               \
-    if (::cloudshape::testing::ci_run()) FAIL() << cloudshape_missing_;                   \
-    GTEST_SKIP() << cloudshape_missing_;                                                  \
+    if (cloudshape_missing_.empty()) break;                                                   \
+    if (::cloudshape::testing::ci_run()) FAIL() << cloudshape_missing_;                       \
+    GTEST_SKIP() << cloudshape_missing_;                                                      \
   } while (false)

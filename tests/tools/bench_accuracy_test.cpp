@@ -22,9 +22,8 @@ const std::string kBin = CLOUDSHAPE_BENCH_BIN;
 // The fast form: the README's solids, poses and cameras (seed 42, 30 per shape), with no
 // cloud above 12 000 points, the preprocessing budget (preprocess.max_points) that larger
 // clouds are gridded down to anyway. 35-50 s of one core for the eight conditions.
-const std::vector<std::string> kFastForm = {kBin,           "--accuracy", "--count", "30",
-                                            "--max-points", "12000",      "--seed",  "42",
-                                            "--json"};
+const std::vector<std::string> kFastForm = {
+    kBin, "--accuracy", "--count", "30", "--max-points", "12000", "--seed", "42", "--json"};
 
 // What a condition's "all" row must reach. Right-shape floors sit about 3 points under the
 // lower of this fast form's figure and the README's (Robustness, measured); error ceilings
