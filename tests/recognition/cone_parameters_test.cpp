@@ -1,0 +1,55 @@
+// Positive cone recognition against ground truth: noisy, with outliers, seen from one side.
+// Radius, height, centre (of the base) and the signed axis (base to apex) within tolerances.
+#include <gtest/gtest.h>
+
+#include "positive_support.hpp"
+
+namespace cloudshape::positive {
+namespace {
+
+const std::vector<std::uint64_t> kSeeds = {31, 32, 33, 34};
+
+synth::SolidSpec random_cone(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const double size = random_size(rng);
+  const double height = size * (0.6 + 0.4 * u(rng));
+  const double radius = size * (0.25 + 0.25 * u(rng));
+  return synth::make_solid(synth::ShapeKind::cone, {radius, height}, random_pose(rng, size));
+}
+
+// Measured (see the "[measured]" lines): ...
+constexpr Tolerance kNoisy{0.02, 0.01, 1.0};
+constexpr Tolerance kOutliers{0.03, 0.01, 1.0};
+constexpr Tolerance kSingleView{0.02, 0.01, 1.0};
+
+TEST(ConeParameters, Noisy) {
+  check_seeds(kSeeds, random_cone, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
+}
+
+TEST(ConeParameters, NoisyWithOutliers) {
+  check_seeds(kSeeds, random_cone, [](const auto&, auto&) { return noisy_with_outliers(); }, false, kOutliers);
+}
+
+// From below the base, 120-135 deg from the axis: the base disc and part of the side.
+TEST(ConeParameters, SingleViewOfTheBaseAndTheSide) {
+  check_seeds(
+      kSeeds, random_cone,
+      [](const synth::SolidSpec& truth, std::mt19937_64& rng) {
+        return seen_from(from_axis(truth, std::uniform_real_distribution<double>(120.0, 135.0)(rng), rng));
+      },
+      true, kSingleView);
+}
+
+// From the apex side, 50-80 deg from the axis: the side only, from the apex down to the
+// rim on the camera's side, which fixes the radius and the height.
+TEST(ConeParameters, SingleViewOfTheSideOnly) {
+  check_seeds(
+      kSeeds, random_cone,
+      [](const synth::SolidSpec& truth, std::mt19937_64& rng) {
+        return seen_from(from_axis(truth, std::uniform_real_distribution<double>(50.0, 80.0)(rng), rng));
+      },
+      true, kSingleView);
+}
+
+}  // namespace
+}  // namespace cloudshape::positive

@@ -1,0 +1,50 @@
+// Positive sphere recognition against ground truth: noisy, with outliers, seen from one side.
+// Radius and centre within stated tolerances (a sphere's axes are any orthonormal set).
+#include <gtest/gtest.h>
+
+#include "positive_support.hpp"
+
+namespace cloudshape::positive {
+namespace {
+
+const std::vector<std::uint64_t> kSeeds = {41, 42, 43, 44};
+
+synth::SolidSpec random_sphere(std::mt19937_64& rng) {
+  const double radius = random_size(rng);
+  return synth::make_solid(synth::ShapeKind::sphere, {radius}, random_pose(rng, 2.0 * radius));
+}
+
+// Measured (see the "[measured]" lines): ...
+constexpr Tolerance kNoisy{0.02, 0.01, 0.0};
+constexpr Tolerance kOutliers{0.03, 0.01, 0.0};
+constexpr Tolerance kSingleView{0.02, 0.01, 0.0};
+
+TEST(SphereParameters, Noisy) {
+  check_seeds(kSeeds, random_sphere, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
+}
+
+TEST(SphereParameters, NoisyWithOutliers) {
+  check_seeds(kSeeds, random_sphere, [](const auto&, auto&) { return noisy_with_outliers(); }, false, kOutliers);
+}
+
+// A hemisphere at most: the radius and the centre are still determined.
+TEST(SphereParameters, SingleView) {
+  check_seeds(
+      kSeeds, random_sphere,
+      [](const synth::SolidSpec& truth, std::mt19937_64& rng) {
+        return seen_from(from_axis(truth, std::uniform_real_distribution<double>(0.0, 180.0)(rng), rng));
+      },
+      true, kSingleView);
+}
+
+TEST(SphereParameters, SingleViewNoisy) {
+  check_seeds(
+      kSeeds, random_sphere,
+      [](const synth::SolidSpec& truth, std::mt19937_64& rng) {
+        return seen_from(from_axis(truth, std::uniform_real_distribution<double>(0.0, 180.0)(rng), rng), 0.005);
+      },
+      true, kSingleView);
+}
+
+}  // namespace
+}  // namespace cloudshape::positive
