@@ -31,7 +31,8 @@ struct Ball {
 std::optional<Ball> circumcircle(const Point& a, const Point& b, const Point& c) {
   const Eigen::Vector3d u = b - a, v = c - a, n = u.cross(v);
   if (n.squaredNorm() < 1e-18) return std::nullopt;
-  const Eigen::Vector3d to_center = (u.squaredNorm() * v.cross(n) + v.squaredNorm() * n.cross(u)) / (2.0 * n.squaredNorm());
+  const Eigen::Vector3d to_center =
+      (u.squaredNorm() * v.cross(n) + v.squaredNorm() * n.cross(u)) / (2.0 * n.squaredNorm());
   return Ball{a + to_center, to_center.norm()};
 }
 
@@ -39,7 +40,8 @@ std::optional<Ball> circumsphere(const Point& a, const Point& b, const Point& c,
   Eigen::Matrix3d m;
   m << (b - a).transpose(), (c - a).transpose(), (d - a).transpose();
   if (std::abs(m.determinant()) < 1e-12) return std::nullopt;
-  const Eigen::Vector3d rhs(0.5 * (b - a).squaredNorm(), 0.5 * (c - a).squaredNorm(), 0.5 * (d - a).squaredNorm());
+  const Eigen::Vector3d rhs(0.5 * (b - a).squaredNorm(), 0.5 * (c - a).squaredNorm(),
+                            0.5 * (d - a).squaredNorm());
   const Eigen::Vector3d to_center = m.fullPivLu().solve(rhs);
   return Ball{a + to_center, to_center.norm()};
 }
@@ -58,7 +60,8 @@ Ball brute_force(const PointList& pts) {
       consider(Ball{0.5 * (pts[a] + pts[b]), 0.5 * (pts[a] - pts[b]).norm()});
       for (std::size_t c = b + 1; c < n; ++c) {
         consider(circumcircle(pts[a], pts[b], pts[c]));
-        for (std::size_t d = c + 1; d < n; ++d) consider(circumsphere(pts[a], pts[b], pts[c], pts[d]));
+        for (std::size_t d = c + 1; d < n; ++d)
+          consider(circumsphere(pts[a], pts[b], pts[c], pts[d]));
       }
     }
   return best;

@@ -143,7 +143,8 @@ TEST(SingleView, ABoxSeenFromOneSideIsPartial) {
   for (int k = 0; k < 3; ++k) ASSERT_GT(std::abs(local[k]), 0.5 * solids[0].dimensions[k].second);
   ASSERT_EQ(got.shape, "box");
   for (std::size_t d = 0; d < 3; ++d)
-    EXPECT_NEAR(got.dimensions[d].second, solids[0].dimensions[d].second, 0.01 * solids[0].dimensions[d].second)
+    EXPECT_NEAR(got.dimensions[d].second, solids[0].dimensions[d].second,
+                0.01 * solids[0].dimensions[d].second)
         << solids[0].dimensions[d].first;
   EXPECT_LT((got.center - solids[0].pose.center).norm(), 0.01 * 3.0);
 }

@@ -30,7 +30,8 @@ Eigen::Vector3d row(const Eigen::Matrix3d& axes, int i) { return axes.row(i).tra
 
 // The largest angle from one of `truth` to the nearest of `got`: both sets of directions are
 // the solid's symmetric features, so which one a frame starts from does not matter.
-double set_angle_deg(const std::vector<Eigen::Vector3d>& truth, const std::vector<Eigen::Vector3d>& got) {
+double set_angle_deg(const std::vector<Eigen::Vector3d>& truth,
+                     const std::vector<Eigen::Vector3d>& got) {
   double worst = 0.0;
   for (const auto& t : truth) {
     double best = 180.0;
@@ -42,14 +43,16 @@ double set_angle_deg(const std::vector<Eigen::Vector3d>& truth, const std::vecto
 
 std::vector<Eigen::Vector3d> tetrahedron_directions(const Eigen::Matrix3d& axes) {
   std::vector<Eigen::Vector3d> out;
-  for (const auto& v : synth::tetrahedron_vertices(1.0)) out.push_back(axes.transpose() * v.normalized());
+  for (const auto& v : synth::tetrahedron_vertices(1.0))
+    out.push_back(axes.transpose() * v.normalized());
   return out;
 }
 
 std::vector<Eigen::Vector3d> prism_side_normals(const Eigen::Matrix3d& axes) {
   const auto v = synth::pentagon_vertices(1.0);
   std::vector<Eigen::Vector3d> out;
-  for (int k = 0; k < 5; ++k) out.push_back(axes.transpose() * (v[k] + v[(k + 1) % 5]).normalized());
+  for (int k = 0; k < 5; ++k)
+    out.push_back(axes.transpose() * (v[k] + v[(k + 1) % 5]).normalized());
   return out;
 }
 
@@ -85,13 +88,18 @@ const config::PipelineConfig& shipped_config() {
 
 Condition noisy() { return {"noise 0.5%", 10000, 0.005, 0.0, std::nullopt}; }
 
-Condition noisy_with_outliers() { return {"noise 0.5% + 3% outliers", 10000, 0.005, 0.03, std::nullopt}; }
-
-Condition seen_from(const Eigen::Vector3d& direction, double noise) {
-  return {noise > 0 ? "single view, noise" : "single view", 10000, noise, 0.0, direction};
+Condition noisy_with_outliers() {
+  return {"noise 0.5% + 3% outliers", 10000, 0.005, 0.03, std::nullopt};
 }
 
-PointList make_cloud(const synth::SolidSpec& truth, const Condition& condition, std::uint64_t seed) {
+Condition seen_from(const Eigen::Vector3d& direction, double noise) {
+  return {noise > 0 ? "single view, noise " + std::to_string(noise * 100).substr(0, 3) + "%"
+                    : "single view",
+          10000, noise, 0.0, direction};
+}
+
+PointList make_cloud(const synth::SolidSpec& truth, const Condition& condition,
+                     std::uint64_t seed) {
   const double size = synth::characteristic_size(truth);
   synth::CloudOptions options;
   options.points = condition.points;
@@ -105,9 +113,11 @@ PointList make_cloud(const synth::SolidSpec& truth, const Condition& condition, 
 Errors errors_of(const pipeline::ObjectResult& got, const synth::SolidSpec& truth) {
   Errors e;
   for (std::size_t d = 0; d < truth.dimensions.size(); ++d) {
-    const bool named = d < got.dimensions.size() && got.dimensions[d].first == truth.dimensions[d].first;
-    e.dimensions.push_back(named ? std::abs(got.dimensions[d].second / truth.dimensions[d].second - 1.0)
-                                 : std::numeric_limits<double>::infinity());
+    const bool named =
+        d < got.dimensions.size() && got.dimensions[d].first == truth.dimensions[d].first;
+    e.dimensions.push_back(
+        named ? std::abs(got.dimensions[d].second / truth.dimensions[d].second - 1.0)
+              : std::numeric_limits<double>::infinity());
   }
   e.center = (got.center - truth.pose.center).norm() / synth::characteristic_size(truth);
   e.axes_deg = axes_error_deg(got, truth);
@@ -116,7 +126,8 @@ Errors errors_of(const pipeline::ObjectResult& got, const synth::SolidSpec& trut
 
 void Worst::add(const Errors& e) {
   dimensions.resize(std::max(dimensions.size(), e.dimensions.size()), 0.0);
-  for (std::size_t d = 0; d < e.dimensions.size(); ++d) dimensions[d] = std::max(dimensions[d], e.dimensions[d]);
+  for (std::size_t d = 0; d < e.dimensions.size(); ++d)
+    dimensions[d] = std::max(dimensions[d], e.dimensions[d]);
   center = std::max(center, e.center);
   axes_deg = std::max(axes_deg, e.axes_deg);
   ++runs;
@@ -129,8 +140,9 @@ void Worst::print(const std::string& shape, const std::string& condition) const 
     std::snprintf(buf, sizeof buf, "%s%.2f%%", dims.empty() ? "" : " ", 100.0 * d);
     dims += buf;
   }
-  std::printf("[measured] %-16s %-26s %d runs: worst dimensions %s, centre %.2f%% of size, axes %.2f deg\n",
-              shape.c_str(), condition.c_str(), runs, dims.c_str(), 100.0 * center, axes_deg);
+  std::printf(
+      "[measured] %-16s %-26s %d runs: worst dimensions %s, centre %.2f%% of size, axes %.2f deg\n",
+      shape.c_str(), condition.c_str(), runs, dims.c_str(), 100.0 * center, axes_deg);
 }
 
 Errors expect_recognised(const PointList& cloud, const synth::SolidSpec& truth, bool partial,
@@ -146,8 +158,9 @@ Errors expect_recognised(const PointList& cloud, const synth::SolidSpec& truth, 
   const Errors e = errors_of(got, truth);
   for (std::size_t d = 0; d < e.dimensions.size(); ++d)
     EXPECT_LE(e.dimensions[d], tolerance.dimension)
-        << truth.dimensions[d].first << ": got " << (d < got.dimensions.size() ? got.dimensions[d].second : 0.0)
-        << ", true " << truth.dimensions[d].second;
+        << truth.dimensions[d].first << ": got "
+        << (d < got.dimensions.size() ? got.dimensions[d].second : 0.0) << ", true "
+        << truth.dimensions[d].second;
   EXPECT_LE(e.center, tolerance.center) << "centre off by this share of the size";
   EXPECT_LE(e.axes_deg, tolerance.axes_deg) << "axes off by this many degrees";
   return e;
@@ -175,7 +188,8 @@ Eigen::Vector3d from_axis(const synth::SolidSpec& truth, double degrees, std::mt
   const double turn = std::uniform_real_distribution<double>(0.0, 2.0 * kPi)(rng);
   const double a = degrees * kPi / 180.0;
   const Eigen::Matrix3d& t = truth.pose.axes;
-  return std::cos(a) * row(t, 0) + std::sin(a) * (std::cos(turn) * row(t, 1) + std::sin(turn) * row(t, 2));
+  return std::cos(a) * row(t, 0) +
+         std::sin(a) * (std::cos(turn) * row(t, 1) + std::sin(turn) * row(t, 2));
 }
 
 synth::Pose random_pose(std::mt19937_64& rng, double size) { return synth::random_pose(rng, size); }

@@ -27,7 +27,7 @@ struct Condition {
   std::optional<Eigen::Vector3d> view_direction;
 };
 
-Condition noisy();              // sigma 0.5% of size
+Condition noisy();                // sigma 0.5% of size
 Condition noisy_with_outliers();  // sigma 0.5% of size and 3% outliers
 Condition seen_from(const Eigen::Vector3d& direction, double noise = 0.0);
 

@@ -20,35 +20,49 @@ Eigen::Vector3d face_normal(const synth::SolidSpec& truth, int i) {
   return truth.pose.axes.transpose() * -synth::tetrahedron_vertices(1.0)[i].normalized();
 }
 
-// Worst over 40 seeds when these were set (edge / centre share of the edge / vertex
-// directions): noise 0.75% / 0.69% / 1.48 deg, outliers 0.87% / 0.75% / 1.53 deg, single
-// views 0.79% / 0.29% / 0.02 deg. Each tolerance is 2-3 times that.
+// Worst over 46 seeds (40 others and these 6) when these were set (edge / centre share of the edge
+// / vertex directions): noise 0.75% / 0.69% / 1.76 deg, outliers 0.87% / 0.75% / 1.53 deg, single
+// views 0.79% / 0.29% / 0.02 deg, noisy single view 0.56% / 0.28% / 0.36 deg. Each tolerance is 2-3
+// times that.
 constexpr Tolerance kNoisy{0.02, 0.02, 3.0};
 constexpr Tolerance kOutliers{0.02, 0.02, 3.0};
 constexpr Tolerance kSingleView{0.02, 0.01, 0.5};
+constexpr Tolerance kSingleViewNoisy{0.02, 0.01, 1.0};
 
 TEST(TetrahedronParameters, Noisy) {
-  check_seeds(kSeeds, random_tetrahedron, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
+  check_seeds(
+      kSeeds, random_tetrahedron, [](const auto&, auto&) { return noisy(); }, false, kNoisy);
 }
 
 TEST(TetrahedronParameters, NoisyWithOutliers) {
-  check_seeds(kSeeds, random_tetrahedron, [](const auto&, auto&) { return noisy_with_outliers(); }, false,
-              kOutliers);
+  check_seeds(
+      kSeeds, random_tetrahedron, [](const auto&, auto&) { return noisy_with_outliers(); }, false,
+      kOutliers);
 }
 
 // Between two face normals: exactly those two faces, which hold all four vertices.
 TEST(TetrahedronParameters, SingleViewOfTwoFaces) {
   check_seeds(
       kSeeds, random_tetrahedron,
-      [](const synth::SolidSpec& truth, auto&) { return seen_from(face_normal(truth, 0) + face_normal(truth, 1)); },
+      [](const synth::SolidSpec& truth, auto&) {
+        return seen_from(face_normal(truth, 0) + face_normal(truth, 1));
+      },
       true, kSingleView);
 }
 
 // Opposite a face: the other three.
 TEST(TetrahedronParameters, SingleViewOfThreeFaces) {
   check_seeds(
-      kSeeds, random_tetrahedron, [](const synth::SolidSpec& truth, auto&) { return seen_from(-face_normal(truth, 3)); },
-      true, kSingleView);
+      kSeeds, random_tetrahedron,
+      [](const synth::SolidSpec& truth, auto&) { return seen_from(-face_normal(truth, 3)); }, true,
+      kSingleView);
+}
+
+TEST(TetrahedronParameters, SingleViewOfThreeFacesNoisy) {
+  check_seeds(
+      kSeeds, random_tetrahedron,
+      [](const synth::SolidSpec& truth, auto&) { return seen_from(-face_normal(truth, 3), 0.005); },
+      true, kSingleViewNoisy);
 }
 
 }  // namespace

@@ -182,7 +182,8 @@ TEST_F(RecognizeCli, GoodFilesGiveOneConformingLineEachInOrder) {
   EXPECT_EQ(res[2]["points_in"].get<std::size_t>(), 5400u);  // the NaN points are dropped
   // Clean, complete surfaces: the shape, and every dimension and the centre within 1% (the
   // synthetic suite's figure; the PCD holds floats, 9 digits).
-  const synth::SolidSpec truths[] = {solid(synth::ShapeKind::box, 1), solid(synth::ShapeKind::cylinder, 2),
+  const synth::SolidSpec truths[] = {solid(synth::ShapeKind::box, 1),
+                                     solid(synth::ShapeKind::cylinder, 2),
                                      solid(synth::ShapeKind::sphere, 3)};
   for (std::size_t i = 0; i < res.size(); ++i) {
     const synth::SolidSpec& truth = truths[i];
@@ -193,7 +194,8 @@ TEST_F(RecognizeCli, GoodFilesGiveOneConformingLineEachInOrder) {
     ASSERT_EQ(o["dimensions"].size(), truth.dimensions.size()) << o.dump();
     for (const auto& [name, value] : truth.dimensions)
       EXPECT_NEAR(o["dimensions"].value(name, 0.0), value, 0.01 * value) << name;
-    const Eigen::Vector3d center(o["pose"]["center"][0].get<double>(), o["pose"]["center"][1].get<double>(),
+    const Eigen::Vector3d center(o["pose"]["center"][0].get<double>(),
+                                 o["pose"]["center"][1].get<double>(),
                                  o["pose"]["center"][2].get<double>());
     EXPECT_LT((center - truth.pose.center).norm(), 0.01 * synth::characteristic_size(truth));
   }
