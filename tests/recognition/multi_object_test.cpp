@@ -130,6 +130,17 @@ TEST(SingleView, ABoxSeenFromOneSideIsPartial) {
   const auto& got = result.objects.front();
   EXPECT_TRUE(got.partial);
   EXPECT_LT(got.confidence, 0.9);
+  // The camera lies beyond all three faces that meet at the nearest corner (its local
+  // coordinates exceed the half-edges), so every edge is seen whole: the view determines all
+  // three dimensions and the centre. Tolerance as the single-view box test's (box_parameters_test).
+  const Eigen::Vector3d local = solids[0].pose.axes * (*opts.view - solids[0].pose.center);
+  for (int k = 0; k < 3; ++k) ASSERT_GT(std::abs(local[k]), 0.5 * solids[0].dimensions[k].second);
+  ASSERT_EQ(got.shape, "box");
+  for (std::size_t d = 0; d < 3; ++d)
+    EXPECT_NEAR(got.dimensions[d].second, solids[0].dimensions[d].second,
+                0.01 * solids[0].dimensions[d].second)
+        << solids[0].dimensions[d].first;
+  EXPECT_LT((got.center - solids[0].pose.center).norm(), 0.01 * 3.0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The real samples of shared/data/real (SOURCES.md): YCB scans sampled at 20k points and the
-// ravens CAD solids. Tolerance as SOURCES.md suggests: +-5 mm or +-8% of the face-to-face
-// value, whichever is larger (CAD: 1%). Without shared/ beside the repository: a failure under
+// ravens CAD solids. Tolerance: 8% of the face-to-face value (CAD: 1%), SOURCES.md's
+// relative criterion without its 5 mm floor, which let the small objects (a 25 mm cube, a
+// 21 mm radius) be 15-24% off. Without shared/ beside the repository: a failure under
 // CI=true, a skip elsewhere (shared_data.hpp).
 #include <gtest/gtest.h>
 
@@ -76,7 +77,7 @@ TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
   ASSERT_EQ(got.dimensions.size(), s.dims.size());
   for (std::size_t d = 0; d < s.dims.size(); ++d) {
     const double mm = got.dimensions[d].second * s.scale_to_mm;
-    const double tol = s.cad ? 0.01 * s.dims[d] : std::max(5.0, 0.08 * s.dims[d]);
+    const double tol = (s.cad ? 0.01 : 0.08) * s.dims[d];
     EXPECT_NEAR(mm, s.dims[d], tol) << got.dimensions[d].first;
   }
 }
