@@ -46,7 +46,7 @@ struct Sample {
   std::vector<double> xyz;
   std::uint32_t object_count = 1;
   std::uint32_t width = 0, height = 0;  // an organized sample's layout
-  std::vector<std::uint32_t> pixel;
+  std::vector<std::uint32_t> pixel = {};
 };
 
 std::vector<Sample> samples() {

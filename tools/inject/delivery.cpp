@@ -1,3 +1,5 @@
+// cloudshape-inject's delivery: a file's cloud (points and, organized, their pixels) published on the
+// raw-cloud topic, and sent again while its result is overdue.
 #include "delivery.hpp"
 
 #include <chrono>
