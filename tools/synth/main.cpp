@@ -10,6 +10,7 @@ int main(int argc, char** argv) {
   cloudshape::synth_tool::add_shape_command(app);
   cloudshape::synth_tool::add_suite_command(app);
   cloudshape::synth_tool::add_mesh_command(app);
+  cloudshape::synth_tool::add_scene_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,113 @@
+// Ray casting of the depth camera and the lidar. Noise and quantisation move a point along its
+// own ray, so pixel i stays on the ray of pixel i.
+#include "synth/range_sensor.hpp"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+namespace cloudshape::synth {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDeg = kPi / 180.0;
+
+Eigen::Vector3d nan_point() {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {nan, nan, nan};
+}
+
+}  // namespace
+
+SensorPose look_at(const Eigen::Vector3d& position, const Eigen::Vector3d& target,
+                   const Eigen::Vector3d& up) {
+  const Eigen::Vector3d z = (target - position).normalized();
+  const Eigen::Vector3d x = z.cross(up).normalized();
+  SensorPose pose;
+  pose.position = position;
+  pose.axes.row(0) = x.transpose();
+  pose.axes.row(1) = z.cross(x).transpose();
+  pose.axes.row(2) = z.transpose();
+  return pose;
+}
+
+double DepthCamera::focal_x() const { return 0.5 * width / std::tan(0.5 * fov_x_deg * kDeg); }
+
+Eigen::Vector3d DepthCamera::pixel_ray(std::size_t column, std::size_t row) const {
+  const double fy = 0.5 * height / std::tan(0.5 * fov_y_deg * kDeg);
+  return {(column + 0.5 - 0.5 * width) / focal_x(), (row + 0.5 - 0.5 * height) / fy, 1.0};
+}
+
+std::size_t Lidar::columns() const {
+  return static_cast<std::size_t>(std::llround(360.0 / azimuth_step_deg));
+}
+
+Eigen::Vector3d Lidar::beam(std::size_t ring, std::size_t column) const {
+  const double elevation =
+      rings < 2 ? min_elevation_deg
+                : min_elevation_deg + (max_elevation_deg - min_elevation_deg) * ring / (rings - 1.0);
+  const double azimuth = column * azimuth_step_deg * kDeg;
+  const double e = elevation * kDeg;
+  return {std::cos(e) * std::cos(azimuth), std::cos(e) * std::sin(azimuth), std::sin(e)};
+}
+
+RangeImage render(const Scene& scene, const DepthCamera& camera, const SensorPose& pose,
+                  std::mt19937_64& rng) {
+  const Scene local = transformed(scene, pose.axes, pose.position);
+  const SceneRayCaster caster(local);
+  RangeImage image{camera.width, camera.height, {}, {}};
+  image.points.reserve(camera.width * camera.height);
+  image.labels.reserve(camera.width * camera.height);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const double focal_baseline = camera.focal_x() * camera.baseline;
+  for (std::size_t row = 0; row < camera.height; ++row) {
+    for (std::size_t column = 0; column < camera.width; ++column) {
+      const Eigen::Vector3d ray = camera.pixel_ray(column, row);
+      const double length = ray.norm();
+      // Range along the unit ray up to the depth limit (depth = range / length since ray.z = 1).
+      const SceneHit hit = caster.cast(Eigen::Vector3d::Zero(), ray / length, camera.max_depth * length);
+      if (hit.label == 0) {
+        image.points.push_back(nan_point());
+        image.labels.push_back(0);
+        continue;
+      }
+      double z = hit.t / length;
+      if (camera.noise_k > 0.0) z += camera.noise_k * z * z * gauss(rng);
+      if (focal_baseline > 0.0) {
+        const double steps = std::max(1.0, std::round(focal_baseline / z / camera.disparity_step));
+        z = focal_baseline / (steps * camera.disparity_step);
+      }
+      image.points.push_back(z * ray);
+      image.labels.push_back(hit.label);
+    }
+  }
+  return image;
+}
+
+RangeImage render(const Scene& scene, const Lidar& lidar, const SensorPose& pose,
+                  std::mt19937_64& rng) {
+  const Scene local = transformed(scene, pose.axes, pose.position);
+  const SceneRayCaster caster(local);
+  const std::size_t columns = lidar.columns();
+  RangeImage image{columns, lidar.rings, {}, {}};
+  image.points.reserve(columns * lidar.rings);
+  image.labels.reserve(columns * lidar.rings);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (std::size_t ring = 0; ring < lidar.rings; ++ring) {
+    for (std::size_t column = 0; column < columns; ++column) {
+      const Eigen::Vector3d beam = lidar.beam(ring, column);
+      const SceneHit hit = caster.cast(Eigen::Vector3d::Zero(), beam, lidar.max_range);
+      if (hit.label == 0) {
+        image.points.push_back(nan_point());
+        image.labels.push_back(0);
+        continue;
+      }
+      const double range = hit.t + (lidar.range_noise > 0.0 ? lidar.range_noise * gauss(rng) : 0.0);
+      image.points.push_back(range * beam);
+      image.labels.push_back(hit.label);
+    }
+  }
+  return image;
+}
+
+}  // namespace cloudshape::synth
