@@ -17,6 +17,15 @@ Eigen::Vector3d nan_point() {
   return {nan, nan, nan};
 }
 
+// True when something lies between the projector and the surface point p.
+bool in_shadow(const SceneRayCaster& caster, const Eigen::Vector3d& projector, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d to_point = p - projector;
+  const double distance = to_point.norm();
+  const SceneHit hit = caster.cast(projector, to_point / distance, distance);
+  // The light's own hit on p's surface comes back at `distance` to rounding.
+  return hit.label != 0 && hit.t < distance * (1.0 - 1e-9);
+}
+
 }  // namespace
 
 SensorPose look_at(const Eigen::Vector3d& position, const Eigen::Vector3d& target,
@@ -60,6 +69,7 @@ RangeImage render(const Scene& scene, const DepthCamera& camera, const SensorPos
   image.labels.reserve(camera.width * camera.height);
   std::normal_distribution<double> gauss(0.0, 1.0);
   const double focal_baseline = camera.focal_x() * camera.baseline;
+  const Eigen::Vector3d projector(camera.projector_offset, 0.0, 0.0);
   for (std::size_t row = 0; row < camera.height; ++row) {
     for (std::size_t column = 0; column < camera.width; ++column) {
       const Eigen::Vector3d ray = camera.pixel_ray(column, row);
@@ -67,6 +77,11 @@ RangeImage render(const Scene& scene, const DepthCamera& camera, const SensorPos
       // Range along the unit ray up to the depth limit (depth = range / length since ray.z = 1).
       const SceneHit hit = caster.cast(Eigen::Vector3d::Zero(), ray / length, camera.max_depth * length);
       if (hit.label == 0) {
+        image.points.push_back(nan_point());
+        image.labels.push_back(0);
+        continue;
+      }
+      if (camera.projector_offset > 0.0 && in_shadow(caster, projector, hit.t * ray / length)) {
         image.points.push_back(nan_point());
         image.labels.push_back(0);
         continue;

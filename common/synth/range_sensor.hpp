@@ -34,6 +34,9 @@ struct DepthCamera {
   // disparity_step pixels. 0 baseline for none.
   double baseline = 0.0;
   double disparity_step = 0.125;
+  // A structured-light camera sees only what its projector lights: with a projector this far
+  // along the camera's +x, pixels in the projector's shadow are empty. 0 for none.
+  double projector_offset = 0.0;
 
   // Direction of pixel (column, row) in the camera frame, with z = 1.
   Eigen::Vector3d pixel_ray(std::size_t column, std::size_t row) const;

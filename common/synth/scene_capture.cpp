@@ -59,6 +59,7 @@ SceneCapture capture_scene(const SceneRecipe& recipe, const CaptureOptions& opti
     camera.max_depth = options.max_depth * unit;
     camera.noise_k = options.depth_noise / unit;
     camera.baseline = options.quantize ? 0.075 * unit : 0.0;
+    camera.projector_offset = options.shadows ? 0.075 * unit : 0.0;
     capture.image = render(capture.generated.scene, camera, pose, rng);
     capture.sensor = {{"type", "depth_camera"},
                       {"width", camera.width},
@@ -67,6 +68,7 @@ SceneCapture capture_scene(const SceneRecipe& recipe, const CaptureOptions& opti
                       {"focal_px", camera.focal_x()},
                       {"depth_noise_k", camera.noise_k},
                       {"baseline", camera.baseline},
+                      {"projector_offset", camera.projector_offset},
                       {"position_world", {pose.position.x(), pose.position.y(), pose.position.z()}}};
   }
   return capture;

@@ -222,7 +222,7 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
     out.sensor.position = Eigen::Vector3d(0.0, 0.0, uniform(rng, 1.0, 1.8) * unit);
   } else {
     add_structure(out.scene, back_wall, side_wall, unit, rng);
-    out.sensor = table_camera(out.scene, walls, recipe.fov_y_deg, rng);
+    out.sensor = table_camera(out.scene, walls, recipe.layout == SceneLayout::row, recipe.fov_y_deg, rng);
   }
   return out;
 }

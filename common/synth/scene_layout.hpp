@@ -42,8 +42,10 @@ struct GeneratedScene {
 // Throws std::invalid_argument for a count out of range or a bad scale or wall count.
 GeneratedScene make_scene(const SceneRecipe& recipe);
 
-// Where a table scene's camera looks from: above the objects and in front of any wall.
-SensorPose table_camera(const Scene& scene, int walls, double fov_y_deg, std::mt19937_64& rng);
+// Where a table scene's camera looks from: above the objects and in front of any wall; along
+// the row (oblique, from either end) when `along_row`, so the objects partly hide each other.
+SensorPose table_camera(const Scene& scene, int walls, bool along_row, double fov_y_deg,
+                        std::mt19937_64& rng);
 
 // A support plane under the objects with a margin, and walls behind (+y) and to the side (+x)
 // at the given positions (nullopt: none).

@@ -53,15 +53,23 @@ void add_structure(Scene& scene, std::optional<double> back_wall_y, std::optiona
                                0.5 * (y1 - y0), wall_half, back_wall_y ? 3u : 2u});
 }
 
-SensorPose table_camera(const Scene& scene, int walls, double fov_y_deg, std::mt19937_64& rng) {
+SensorPose table_camera(const Scene& scene, int walls, bool along_row, double fov_y_deg,
+                        std::mt19937_64& rng) {
   const Footprint f = footprint(scene);
   const Eigen::Vector3d target(0.5 * (f.x0 + f.x1), 0.5 * (f.y0 + f.y1), 0.3 * f.top);
   // The objects fill about three quarters of the image height.
   const double radius = 0.5 * std::hypot(f.x1 - f.x0, f.y1 - f.y0) + 0.5 * f.top;
   const double distance = radius / std::tan(0.5 * 0.75 * fov_y_deg * kDeg);
-  const double elevation = uniform(rng, 35.0, 60.0) * kDeg;
-  // From the front (-y), and from the -x side when a side wall stands at +x.
-  const double azimuth = (walls >= 2 ? uniform(rng, -125.0, -100.0) : uniform(rng, -120.0, -60.0)) * kDeg;
+  // Lower along a row, where the objects are to hide each other.
+  const double elevation = (along_row ? uniform(rng, 20.0, 35.0) : uniform(rng, 35.0, 60.0)) * kDeg;
+  // From the front (-y), from the -x side when a side wall stands at +x, and 10-30 degrees off
+  // the row's line (the x axis) to look along a row.
+  double azimuth_deg = walls >= 2 ? uniform(rng, -125.0, -100.0) : uniform(rng, -120.0, -60.0);
+  if (along_row) {
+    const double off_line = uniform(rng, 10.0, 30.0);
+    azimuth_deg = walls >= 2 || uniform(rng, 0.0, 1.0) < 0.5 ? -180.0 + off_line : -off_line;
+  }
+  const double azimuth = azimuth_deg * kDeg;
   const Eigen::Vector3d position =
       target + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
                                           std::cos(elevation) * std::sin(azimuth), std::sin(elevation));

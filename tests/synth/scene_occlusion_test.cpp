@@ -81,6 +81,33 @@ TEST_P(SceneOcclusion, TheBoxHidesThePartOfTheSphereBehindIt) {
   EXPECT_GT(box_seen, hidden);
 }
 
+// A row seen along its line: nearer objects hide parts of farther ones, in most scenes.
+TEST(SceneOcclusion, RowsSeenAlongTheirLineHaveObjectsHidingEachOther) {
+  std::size_t scenes_with_occlusion = 0;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    SceneRecipe recipe;
+    recipe.layout = SceneLayout::row;
+    recipe.count = 4;
+    recipe.seed = seed;
+    const GeneratedScene g = make_scene(recipe);
+    DepthCamera camera;
+    camera.width = 160;
+    camera.height = 120;
+    std::mt19937_64 rng(1);
+    const RangeImage all = render(g.scene, camera, g.sensor, rng);
+    std::size_t hidden = 0;
+    for (const auto& object : g.scene.objects) {
+      Scene alone;
+      alone.objects.push_back(object);
+      const RangeImage one = render(alone, camera, g.sensor, rng);
+      for (std::size_t i = 0; i < one.labels.size(); ++i)
+        hidden += one.labels[i] == object.label && all.labels[i] >= 20 && all.labels[i] != object.label ? 1 : 0;
+    }
+    scenes_with_occlusion += hidden > 10 ? 1 : 0;
+  }
+  EXPECT_GE(scenes_with_occlusion, 4u);
+}
+
 INSTANTIATE_TEST_SUITE_P(ObjectOrder, SceneOcclusion, ::testing::Bool(),
                          [](const auto& info) { return info.param ? "box_first" : "sphere_first"; });
 

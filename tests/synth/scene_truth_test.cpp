@@ -114,5 +114,38 @@ TEST(SceneTruth, QuantisedDepthsTakeDisparitySteps) {
   EXPECT_GT(n, 1000u);
 }
 
+// Whether one of `samples` points of the open segment from a to b lies inside a solid.
+bool segment_blocked(const Scene& scene, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol,
+                     int samples) {
+  for (int k = 1; k < samples; ++k) {
+    const Eigen::Vector3d q = a + (b - a) * (static_cast<double>(k) / samples);
+    for (const auto& o : scene.objects)
+      if (testing::surface_residual(o.solid, q) < -tol) return true;
+  }
+  return false;
+}
+
+TEST(SceneTruth, ProjectorShadowsEmptyExactlyThePixelsTheProjectorCannotLight) {
+  auto options = testing::small_camera();
+  const SceneCapture lit = capture(SceneLayout::touching, 3, 1.0, options);
+  options.shadows = true;
+  const SceneCapture shaded = capture(SceneLayout::touching, 3, 1.0, options);
+  const Eigen::Vector3d projector(0.075, 0.0, 0.0);
+  std::size_t removed = 0, removed_and_blocked = 0;
+  for (std::size_t i = 0; i < lit.image.points.size(); ++i) {
+    if (shaded.image.labels[i] != 0) {
+      ASSERT_EQ(shaded.image.labels[i], lit.image.labels[i]);
+      ASSERT_EQ(shaded.image.points[i], lit.image.points[i]);
+      ASSERT_FALSE(segment_blocked(shaded.scene, projector, shaded.image.points[i], 1e-9, 256)) << "pixel " << i;
+    } else if (lit.image.labels[i] != 0) {
+      ++removed;
+      removed_and_blocked += segment_blocked(lit.scene, projector, lit.image.points[i], 0.0, 2000) ? 1 : 0;
+    }
+  }
+  // Shadows fall beside the objects; sampling the segment may miss a shadow's thin edge.
+  EXPECT_GT(removed, 20u);
+  EXPECT_GE(removed_and_blocked, 0.9 * removed);
+}
+
 }  // namespace
 }  // namespace cloudshape::synth

@@ -25,6 +25,7 @@ struct SceneArgs {
   double max_depth = 0.0;
   double depth_noise = 0.0;
   bool quantize = false;
+  bool shadows = false;
   std::size_t rings = 32;
   std::string elevation = "-30,10";
   double azimuth_step = 0.2;
@@ -62,6 +63,7 @@ void run_scene(const SceneArgs& args) {
   if (args.max_depth > 0.0) options.max_depth = options.max_range = args.max_depth;
   options.depth_noise = args.depth_noise;
   options.quantize = args.quantize;
+  options.shadows = args.shadows;
   options.rings = args.rings;
   const auto elevation = parse_numbers(args.elevation, "--elevation");
   if (elevation.size() != 2 || !(elevation[0] <= elevation[1]))
@@ -112,6 +114,7 @@ void add_scene_command(CLI::App& app) {
                   "Depth noise sigma = K z^2 (z in metres x scale; Kinect about 0.0028)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quantize", args->quantize, "Kinect disparity quantisation (1/8 px, 7.5 cm baseline)");
+  cmd->add_flag("--shadows", args->shadows, "Kinect projector shadows (projector 7.5 cm beside the camera)");
   cmd->add_option("--rings", args->rings, "Lidar beams")->check(CLI::PositiveNumber)->capture_default_str();
   cmd->add_option("--elevation", args->elevation, "Lidar beam elevations LOW,HIGH (degrees)")
       ->capture_default_str();
