@@ -18,7 +18,8 @@ Eigen::Vector3d nan_point() {
 }
 
 // True when something lies between the projector and the surface point p.
-bool in_shadow(const SceneRayCaster& caster, const Eigen::Vector3d& projector, const Eigen::Vector3d& p) {
+bool in_shadow(const SceneRayCaster& caster, const Eigen::Vector3d& projector,
+               const Eigen::Vector3d& p) {
   const Eigen::Vector3d to_point = p - projector;
   const double distance = to_point.norm();
   const SceneHit hit = caster.cast(projector, to_point / distance, distance);
@@ -52,9 +53,9 @@ std::size_t Lidar::columns() const {
 }
 
 Eigen::Vector3d Lidar::beam(std::size_t ring, std::size_t column) const {
-  const double elevation =
-      rings < 2 ? min_elevation_deg
-                : min_elevation_deg + (max_elevation_deg - min_elevation_deg) * ring / (rings - 1.0);
+  const double elevation = rings < 2 ? min_elevation_deg
+                                     : min_elevation_deg + (max_elevation_deg - min_elevation_deg) *
+                                                               ring / (rings - 1.0);
   const double azimuth = column * azimuth_step_deg * kDeg;
   const double e = elevation * kDeg;
   return {std::cos(e) * std::cos(azimuth), std::cos(e) * std::sin(azimuth), std::sin(e)};
@@ -75,7 +76,8 @@ RangeImage render(const Scene& scene, const DepthCamera& camera, const SensorPos
       const Eigen::Vector3d ray = camera.pixel_ray(column, row);
       const double length = ray.norm();
       // Range along the unit ray up to the depth limit (depth = range / length since ray.z = 1).
-      const SceneHit hit = caster.cast(Eigen::Vector3d::Zero(), ray / length, camera.max_depth * length);
+      const SceneHit hit =
+          caster.cast(Eigen::Vector3d::Zero(), ray / length, camera.max_depth * length);
       if (hit.label == 0) {
         image.points.push_back(nan_point());
         image.labels.push_back(0);

@@ -45,7 +45,8 @@ SceneHit SceneRayCaster::cast(const Eigen::Vector3d& origin, const Eigen::Vector
   return best;
 }
 
-Scene transformed(const Scene& scene, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& origin) {
+Scene transformed(const Scene& scene, const Eigen::Matrix3d& rotation,
+                  const Eigen::Vector3d& origin) {
   Scene out = scene;
   for (auto& rect : out.structure) {
     rect.center = rotation * (rect.center - origin);

@@ -43,7 +43,8 @@ struct SceneHit {
 class SceneRayCaster {
  public:
   explicit SceneRayCaster(const Scene& scene);
-  SceneHit cast(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, double t_max) const;
+  SceneHit cast(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
+                double t_max) const;
 
  private:
   const Scene& scene_;
@@ -51,6 +52,7 @@ class SceneRayCaster {
 };
 
 // The scene seen from another frame: every position p becomes rotation * (p - origin).
-Scene transformed(const Scene& scene, const Eigen::Matrix3d& rotation, const Eigen::Vector3d& origin);
+Scene transformed(const Scene& scene, const Eigen::Matrix3d& rotation,
+                  const Eigen::Vector3d& origin);
 
 }  // namespace cloudshape::synth

@@ -43,13 +43,14 @@ SceneCapture capture_scene(const SceneRecipe& recipe, const CaptureOptions& opti
     lidar.range_noise = options.range_noise * unit;
     capture.image = render(capture.generated.scene, lidar, pose, rng);
     if (!options.organized_lidar) capture.image = returns_only(capture.image);
-    capture.sensor = {{"type", "lidar"},
-                      {"rings", lidar.rings},
-                      {"elevation_deg", {lidar.min_elevation_deg, lidar.max_elevation_deg}},
-                      {"azimuth_step_deg", lidar.azimuth_step_deg},
-                      {"range_noise", lidar.range_noise},
-                      {"organized", options.organized_lidar},
-                      {"position_world", {pose.position.x(), pose.position.y(), pose.position.z()}}};
+    capture.sensor = {
+        {"type", "lidar"},
+        {"rings", lidar.rings},
+        {"elevation_deg", {lidar.min_elevation_deg, lidar.max_elevation_deg}},
+        {"azimuth_step_deg", lidar.azimuth_step_deg},
+        {"range_noise", lidar.range_noise},
+        {"organized", options.organized_lidar},
+        {"position_world", {pose.position.x(), pose.position.y(), pose.position.z()}}};
   } else {
     DepthCamera camera;
     camera.width = options.width;
@@ -61,15 +62,16 @@ SceneCapture capture_scene(const SceneRecipe& recipe, const CaptureOptions& opti
     camera.baseline = options.quantize ? 0.075 * unit : 0.0;
     camera.projector_offset = options.shadows ? 0.075 * unit : 0.0;
     capture.image = render(capture.generated.scene, camera, pose, rng);
-    capture.sensor = {{"type", "depth_camera"},
-                      {"width", camera.width},
-                      {"height", camera.height},
-                      {"fov_deg", {camera.fov_x_deg, camera.fov_y_deg}},
-                      {"focal_px", camera.focal_x()},
-                      {"depth_noise_k", camera.noise_k},
-                      {"baseline", camera.baseline},
-                      {"projector_offset", camera.projector_offset},
-                      {"position_world", {pose.position.x(), pose.position.y(), pose.position.z()}}};
+    capture.sensor = {
+        {"type", "depth_camera"},
+        {"width", camera.width},
+        {"height", camera.height},
+        {"fov_deg", {camera.fov_x_deg, camera.fov_y_deg}},
+        {"focal_px", camera.focal_x()},
+        {"depth_noise_k", camera.noise_k},
+        {"baseline", camera.baseline},
+        {"projector_offset", camera.projector_offset},
+        {"position_world", {pose.position.x(), pose.position.y(), pose.position.z()}}};
   }
   return capture;
 }

@@ -22,7 +22,7 @@ struct CaptureOptions {
   std::size_t rings = 32;
   double min_elevation_deg = -30.0, max_elevation_deg = 10.0, azimuth_step_deg = 0.2;
   double max_range = std::numeric_limits<double>::infinity();
-  double range_noise = 0.0;  // lidar range sigma
+  double range_noise = 0.0;      // lidar range sigma
   bool organized_lidar = false;  // rings x azimuth grid; otherwise only the returns, unorganized
 };
 

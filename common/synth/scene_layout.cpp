@@ -26,16 +26,16 @@ ShapeKind random_kind(std::mt19937_64& rng) {
   return all_shape_kinds()[std::uniform_int_distribution<std::size_t>(0, 5)(rng)];
 }
 
-// Lines the solids [first, end) up along +x from `start`, `gap` apart (a gap of 0 touches).
-double line_up(std::vector<SolidSpec>& solids, std::size_t first, double start, double gap_lo,
-               double gap_hi, std::mt19937_64& rng) {
+// Lines the solids [first, end) up along +x from `start`, each gap drawn from [gap_lo, gap_hi]
+// (gap_hi 0: every neighbour touches the next).
+void line_up(std::vector<SolidSpec>& solids, std::size_t first, double start, double gap_lo,
+             double gap_hi, std::mt19937_64& rng) {
   double cursor = start;
   for (std::size_t i = first; i < solids.size(); ++i) {
     if (i > first) cursor += gap_hi > 0.0 ? uniform(rng, gap_lo, gap_hi) : 0.0;
     set_lowest(solids[i], kX, cursor);
     cursor = highest(solids[i], kX);
   }
-  return cursor;
 }
 
 void shift_all(std::vector<SolidSpec>& solids, const Eigen::Vector3d& offset) {
@@ -52,8 +52,8 @@ void centre_footprint(std::vector<SolidSpec>& solids) {
   shift_all(solids, Eigen::Vector3d(-0.5 * (x0 + x1), -0.5 * (y0 + y1), 0.0));
 }
 
-// Places resting solids at random centres within `radius_range` of `around`, none within
-// `gap` of another (bounding spheres about the centres kept apart horizontally).
+// Places resting solids at random centres between min_range and max_range from the origin
+// (the reach grows when the solids crowd), their bounding spheres at least `gap` apart.
 void scatter(std::vector<SolidSpec>& solids, double min_range, double max_range, double gap,
              std::mt19937_64& rng) {
   for (std::size_t i = 0; i < solids.size(); ++i) {
@@ -79,7 +79,8 @@ void scatter(std::vector<SolidSpec>& solids, double min_range, double max_range,
 
 std::vector<SolidSpec> random_resting(std::size_t count, std::mt19937_64& rng, double unit) {
   std::vector<SolidSpec> solids;
-  for (std::size_t i = 0; i < count; ++i) solids.push_back(resting_solid(random_kind(rng), rng, unit));
+  for (std::size_t i = 0; i < count; ++i)
+    solids.push_back(resting_solid(random_kind(rng), rng, unit));
   return solids;
 }
 
@@ -97,23 +98,31 @@ void lidar_structure(Scene& scene, int walls, double unit, std::mt19937_64& rng)
   const double half = 15.0 * unit, wall_half_height = 1.5 * unit;
   scene.structure.push_back({"plane", Eigen::Vector3d::Zero(), kX, kY, half, half, 1});
   if (walls >= 1)
-    scene.structure.push_back({"wall", Eigen::Vector3d(0.0, uniform(rng, 7.0, 10.0) * unit, wall_half_height),
-                               kX, kZ, half, wall_half_height, 2});
+    scene.structure.push_back(
+        {"wall", Eigen::Vector3d(0.0, uniform(rng, 7.0, 10.0) * unit, wall_half_height), kX, kZ,
+         half, wall_half_height, 2});
   if (walls >= 2)
-    scene.structure.push_back({"wall", Eigen::Vector3d(uniform(rng, 7.0, 10.0) * unit, 0.0, wall_half_height),
-                               kY, kZ, half, wall_half_height, 3});
+    scene.structure.push_back(
+        {"wall", Eigen::Vector3d(uniform(rng, 7.0, 10.0) * unit, 0.0, wall_half_height), kY, kZ,
+         half, wall_half_height, 3});
 }
 
 }  // namespace
 
 std::string to_string(SceneLayout layout) {
   switch (layout) {
-    case SceneLayout::touching: return "touching";
-    case SceneLayout::stacked: return "stacked";
-    case SceneLayout::row: return "row";
-    case SceneLayout::wall: return "wall";
-    case SceneLayout::random: return "random";
-    case SceneLayout::lidar: return "lidar";
+    case SceneLayout::touching:
+      return "touching";
+    case SceneLayout::stacked:
+      return "stacked";
+    case SceneLayout::row:
+      return "row";
+    case SceneLayout::wall:
+      return "wall";
+    case SceneLayout::random:
+      return "random";
+    case SceneLayout::lidar:
+      return "lidar";
   }
   return "?";
 }
@@ -132,18 +141,21 @@ std::optional<SceneLayout> scene_layout_from_string(std::string_view name) {
 }
 
 GeneratedScene make_scene(const SceneRecipe& recipe) {
-  const bool pairs = recipe.layout == SceneLayout::touching || recipe.layout == SceneLayout::stacked;
+  const bool pairs =
+      recipe.layout == SceneLayout::touching || recipe.layout == SceneLayout::stacked;
   if (recipe.count < (pairs ? 2u : 1u) || recipe.count > 5)
     throw std::invalid_argument("--count: " + to_string(recipe.layout) + " takes " +
-                                (pairs ? "2" : "1") + " to 5 objects, not " + std::to_string(recipe.count));
+                                (pairs ? "2" : "1") + " to 5 objects, not " +
+                                std::to_string(recipe.count));
   if (!(recipe.scale > 0.0) || !std::isfinite(recipe.scale))
     throw std::invalid_argument("--scale: must be positive and finite");
   if (recipe.walls < -1 || recipe.walls > 2) throw std::invalid_argument("--walls: 0, 1 or 2");
-  const int walls = recipe.walls >= 0                         ? recipe.walls
+  const int walls = recipe.walls >= 0                     ? recipe.walls
                     : recipe.layout == SceneLayout::wall  ? 1
                     : recipe.layout == SceneLayout::lidar ? 2
                                                           : 0;
-  std::seed_seq seed{recipe.seed, static_cast<std::uint64_t>(recipe.layout), std::uint64_t{0x7363656e65}};
+  std::seed_seq seed{recipe.seed, static_cast<std::uint64_t>(recipe.layout),
+                     std::uint64_t{0x7363656e65}};
   std::mt19937_64 rng(seed);
   const double unit = recipe.scale;
 
@@ -154,13 +166,15 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
     case SceneLayout::row:
     case SceneLayout::wall:
       solids = random_resting(recipe.count, rng, unit);
-      for (auto& s : solids) translate(s, Eigen::Vector3d(0.0, uniform(rng, -0.03, 0.03) * unit, 0.0));
+      for (auto& s : solids)
+        translate(s, Eigen::Vector3d(0.0, uniform(rng, -0.03, 0.03) * unit, 0.0));
       line_up(solids, 0, 0.0, 0.03 * unit, 0.08 * unit, rng);
       centre_footprint(solids);
       break;
     case SceneLayout::touching:
       for (std::size_t i = 0; i < recipe.count; ++i) {
-        solids.push_back(uniform(rng, 0.0, 1.0) < 0.6 ? aligned_box(rng, unit) : standing_cylinder(rng, unit));
+        solids.push_back(uniform(rng, 0.0, 1.0) < 0.6 ? aligned_box(rng, unit)
+                                                      : standing_cylinder(rng, unit));
         if (i > 0) out.touching.emplace_back(i - 1, i);
       }
       line_up(solids, 0, 0.0, 0.0, 0.0, rng);
@@ -176,16 +190,20 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
         solids.push_back(upper);
         out.stacked.emplace_back(i, i - 1);
       }
-      for (std::size_t i = height; i < recipe.count; ++i) solids.push_back(resting_solid(random_kind(rng), rng, unit));
+      for (std::size_t i = height; i < recipe.count; ++i)
+        solids.push_back(resting_solid(random_kind(rng), rng, unit));
       double stack_right = -1e300;
-      for (std::size_t i = 0; i < height; ++i) stack_right = std::max(stack_right, highest(solids[i], kX));
-      line_up(solids, height, stack_right + uniform(rng, 0.03, 0.08) * unit, 0.03 * unit, 0.08 * unit, rng);
+      for (std::size_t i = 0; i < height; ++i)
+        stack_right = std::max(stack_right, highest(solids[i], kX));
+      line_up(solids, height, stack_right + uniform(rng, 0.03, 0.08) * unit, 0.03 * unit,
+              0.08 * unit, rng);
       centre_footprint(solids);
       break;
     }
     case SceneLayout::random:
       solids = random_resting(recipe.count, rng, unit);
-      scatter(solids, 0.0, 0.15 * unit * std::sqrt(static_cast<double>(recipe.count)), 0.02 * unit, rng);
+      scatter(solids, 0.0, 0.15 * unit * std::sqrt(static_cast<double>(recipe.count)), 0.02 * unit,
+              rng);
       centre_footprint(solids);
       break;
     case SceneLayout::lidar:
@@ -209,7 +227,8 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
     }
   } else if (recipe.layout != SceneLayout::lidar) {
     double y1 = -1e300, x1 = -1e300;
-    for (const auto& s : solids) y1 = std::max(y1, highest(s, kY)), x1 = std::max(x1, highest(s, kX));
+    for (const auto& s : solids)
+      y1 = std::max(y1, highest(s, kY)), x1 = std::max(x1, highest(s, kX));
     if (walls >= 1) back_wall = y1 + uniform(rng, 0.05, 0.2) * unit;
     if (walls >= 2) side_wall = x1 + uniform(rng, 0.05, 0.2) * unit;
   }
@@ -222,7 +241,8 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
     out.sensor.position = Eigen::Vector3d(0.0, 0.0, uniform(rng, 1.0, 1.8) * unit);
   } else {
     add_structure(out.scene, back_wall, side_wall, unit, rng);
-    out.sensor = table_camera(out.scene, walls, recipe.layout == SceneLayout::row, recipe.fov_y_deg, rng);
+    out.sensor =
+        table_camera(out.scene, walls, recipe.layout == SceneLayout::row, recipe.fov_y_deg, rng);
   }
   return out;
 }

@@ -49,7 +49,7 @@ SensorPose table_camera(const Scene& scene, int walls, bool along_row, double fo
 
 // A support plane under the objects with a margin, and walls behind (+y) and to the side (+x)
 // at the given positions (nullopt: none).
-void add_structure(Scene& scene, std::optional<double> back_wall_y, std::optional<double> side_wall_x,
-                   double unit, std::mt19937_64& rng);
+void add_structure(Scene& scene, std::optional<double> back_wall_y,
+                   std::optional<double> side_wall_x, double unit, std::mt19937_64& rng);
 
 }  // namespace cloudshape::synth

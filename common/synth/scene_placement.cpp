@@ -74,13 +74,15 @@ SolidSpec standing_cylinder(std::mt19937_64& rng, double unit) {
   Pose pose;
   // The axis (local x) vertical; rows stay a right-handed frame.
   pose.axes << 0, 0, 1, 1, 0, 0, 0, 1, 0;
-  SolidSpec spec = make_solid(ShapeKind::cylinder, tabletop_dimensions(ShapeKind::cylinder, rng, unit), pose);
+  SolidSpec spec =
+      make_solid(ShapeKind::cylinder, tabletop_dimensions(ShapeKind::cylinder, rng, unit), pose);
   set_lowest(spec, Eigen::Vector3d::UnitZ(), 0.0);
   return spec;
 }
 
 void yaw(SolidSpec& spec, double angle) {
-  const Eigen::Matrix3d turn = Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(angle, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   spec.pose.axes = spec.pose.axes * turn.transpose();
 }
 
@@ -96,7 +98,8 @@ void stack_on(SolidSpec& upper, const SolidSpec& lower, std::mt19937_64& rng) {
     if (std::abs(axis.z()) < 0.5) offset += uniform(rng, -0.2, 0.2) * half[k] * axis;
   }
   const Eigen::Vector3d top = lower.pose.center + offset;
-  translate(upper, Eigen::Vector3d(top.x() - upper.pose.center.x(), top.y() - upper.pose.center.y(), 0.0));
+  translate(upper,
+            Eigen::Vector3d(top.x() - upper.pose.center.x(), top.y() - upper.pose.center.y(), 0.0));
   set_lowest(upper, Eigen::Vector3d::UnitZ(), highest(lower, Eigen::Vector3d::UnitZ()));
 }
 

@@ -34,23 +34,23 @@ Footprint footprint(const Scene& scene) {
 
 }  // namespace
 
-void add_structure(Scene& scene, std::optional<double> back_wall_y, std::optional<double> side_wall_x,
-                   double unit, std::mt19937_64& rng) {
+void add_structure(Scene& scene, std::optional<double> back_wall_y,
+                   std::optional<double> side_wall_x, double unit, std::mt19937_64& rng) {
   const Footprint f = footprint(scene);
   const double mx = (f.x1 - f.x0) * uniform(rng, 0.3, 0.6) + 0.1 * unit;
   const double my = (f.y1 - f.y0) * uniform(rng, 0.3, 0.6) + 0.1 * unit;
   const double x0 = f.x0 - mx, y0 = f.y0 - my;
   // A table against a wall ends at the wall.
   const double x1 = side_wall_x.value_or(f.x1 + mx), y1 = back_wall_y.value_or(f.y1 + my);
-  scene.structure.push_back({"plane", Eigen::Vector3d(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0), kX, kY,
-                             0.5 * (x1 - x0), 0.5 * (y1 - y0), 1});
+  scene.structure.push_back({"plane", Eigen::Vector3d(0.5 * (x0 + x1), 0.5 * (y0 + y1), 0.0), kX,
+                             kY, 0.5 * (x1 - x0), 0.5 * (y1 - y0), 1});
   const double wall_half = 0.4 * std::max(x1 - x0, y1 - y0) + 0.5 * f.top;
   if (back_wall_y)
-    scene.structure.push_back({"wall", Eigen::Vector3d(0.5 * (x0 + x1), *back_wall_y, wall_half), kX, kZ,
-                               0.5 * (x1 - x0), wall_half, 2});
+    scene.structure.push_back({"wall", Eigen::Vector3d(0.5 * (x0 + x1), *back_wall_y, wall_half),
+                               kX, kZ, 0.5 * (x1 - x0), wall_half, 2});
   if (side_wall_x)
-    scene.structure.push_back({"wall", Eigen::Vector3d(*side_wall_x, 0.5 * (y0 + y1), wall_half), kY, kZ,
-                               0.5 * (y1 - y0), wall_half, back_wall_y ? 3u : 2u});
+    scene.structure.push_back({"wall", Eigen::Vector3d(*side_wall_x, 0.5 * (y0 + y1), wall_half),
+                               kY, kZ, 0.5 * (y1 - y0), wall_half, back_wall_y ? 3u : 2u});
 }
 
 SensorPose table_camera(const Scene& scene, int walls, bool along_row, double fov_y_deg,
@@ -72,7 +72,8 @@ SensorPose table_camera(const Scene& scene, int walls, bool along_row, double fo
   const double azimuth = azimuth_deg * kDeg;
   const Eigen::Vector3d position =
       target + distance * Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
-                                          std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
+                                          std::cos(elevation) * std::sin(azimuth),
+                                          std::sin(elevation));
   return look_at(position, target);
 }
 

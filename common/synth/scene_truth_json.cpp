@@ -45,11 +45,13 @@ nlohmann::json scene_truth_json(const std::string& source, const SceneRecipe& re
                          {"visible_points", count.count(r.label) ? count.at(r.label) : 0}});
   const auto label_pairs = [&](const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
     nlohmann::json list = nlohmann::json::array();
-    for (const auto& [a, b] : pairs) list.push_back({scene.objects[a].label, scene.objects[b].label});
+    for (const auto& [a, b] : pairs)
+      list.push_back({scene.objects[a].label, scene.objects[b].label});
     return list;
   };
   nlohmann::json against = nlohmann::json::array();
-  for (const auto& [object, wall] : generated.against_wall) against.push_back({scene.objects[object].label, wall});
+  for (const auto& [object, wall] : generated.against_wall)
+    against.push_back({scene.objects[object].label, wall});
   return {{"source", source},
           {"layout", to_string(recipe.layout)},
           {"seed", recipe.seed},

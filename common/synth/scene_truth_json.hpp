@@ -14,7 +14,8 @@ namespace cloudshape::synth {
 // {"source", "layout", "seed", "scale", "points", "sensor", "view": [0,0,0],
 //  "objects": [{shape, dimensions, pose, "partial": true, "label", "visible_points"}...],
 //  "structure": [{"kind", "label", "center", "normal", "size": [2 half_u, 2 half_v]}...],
-//  "touching": [[label, label]...], "stacked": [[upper, lower]...], "against_wall": [[object, wall]...]}
+//  "touching": [[label, label]...], "stacked": [[upper, lower]...], "against_wall": [[object,
+//  wall]...]}
 nlohmann::json scene_truth_json(const std::string& source, const SceneRecipe& recipe,
                                 const GeneratedScene& generated, const Scene& scene,
                                 const RangeImage& image, const nlohmann::json& sensor);

@@ -65,7 +65,8 @@ double support(const SolidSpec& spec, const Eigen::Vector3d& direction) {
     }
     default: {
       double best = -std::numeric_limits<double>::infinity();
-      for (const auto& q : local_vertices(spec)) best = std::max(best, direction.dot(spec.pose.to_world(q)));
+      for (const auto& q : local_vertices(spec))
+        best = std::max(best, direction.dot(spec.pose.to_world(q)));
       return best;
     }
   }

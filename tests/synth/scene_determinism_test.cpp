@@ -48,7 +48,8 @@ TEST_P(SceneUnitFree, ScaleThousandIsTheSameSceneTimesThousand) {
     if (metres.image.labels[i] == 0) continue;
     ++finite;
     const Eigen::Vector3d& m = metres.image.points[i];
-    worst = std::max(worst, (millimetres.image.points[i] - 1000.0 * m).norm() / (1000.0 * m.norm()));
+    worst =
+        std::max(worst, (millimetres.image.points[i] - 1000.0 * m).norm() / (1000.0 * m.norm()));
   }
   // Rounding may flip a pixel that grazes a silhouette; nothing else may differ.
   EXPECT_LE(label_changes, 2u);
@@ -60,7 +61,8 @@ TEST_P(SceneUnitFree, ScaleThousandIsTheSameSceneTimesThousand) {
     const SolidSpec& mm = millimetres.scene.objects[k].solid;
     ASSERT_EQ(m.kind, mm.kind);
     for (std::size_t d = 0; d < m.dimensions.size(); ++d)
-      EXPECT_NEAR(mm.dimensions[d].second, 1000.0 * m.dimensions[d].second, 1e-9 * mm.dimensions[d].second);
+      EXPECT_NEAR(mm.dimensions[d].second, 1000.0 * m.dimensions[d].second,
+                  1e-9 * mm.dimensions[d].second);
     EXPECT_LT((mm.pose.center - 1000.0 * m.pose.center).norm(), 1e-9 * mm.pose.center.norm());
     EXPECT_LT((mm.pose.axes - m.pose.axes).norm(), 1e-12);
   }

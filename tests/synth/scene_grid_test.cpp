@@ -67,8 +67,10 @@ TEST(SceneGrid, OrganizedLidarReturnsLieOnTheirBeams) {
 
 TEST(SceneGrid, LabelledPcdReadsBackWithGridAndLabels) {
   const SceneCapture c = testing::capture(SceneLayout::touching, 4);
-  for (const auto encoding : {io::PcdEncoding::ascii, io::PcdEncoding::binary, io::PcdEncoding::binary_compressed}) {
-    const std::string bytes = io::encode_labelled_pcd(c.image.points, c.image.labels, 160, 120, encoding);
+  for (const auto encoding :
+       {io::PcdEncoding::ascii, io::PcdEncoding::binary, io::PcdEncoding::binary_compressed}) {
+    const std::string bytes =
+        io::encode_labelled_pcd(c.image.points, c.image.labels, 160, 120, encoding);
     const io::CloudFile file = io::read_pcd_buffer(bytes, "scene.pcd");
     ASSERT_EQ(file.grid.width, 160u);
     ASSERT_EQ(file.grid.height, 120u);

@@ -50,7 +50,8 @@ TEST_P(SceneOcclusion, TheBoxHidesThePartOfTheSphereBehindIt) {
       // The box (0.4 along x, 0.6 along y, 0.1 deep) faces the camera with the plane z = 1.45,
       // x in [-0.35, 0.05], y in [-0.3, 0.3]; the sphere's entry along d in closed form.
       const Eigen::Vector3d on_front = d * (1.45 / d.z());
-      const bool box_in_front = std::abs(on_front.x() + 0.15) <= 0.2 && std::abs(on_front.y()) <= 0.3;
+      const bool box_in_front =
+          std::abs(on_front.x() + 0.15) <= 0.2 && std::abs(on_front.y()) <= 0.3;
       const double b = d.dot(Eigen::Vector3d(0, 0, 3));
       const double disc = b * b - (9.0 - 0.25);
       const bool on_sphere = disc > 0.0;
@@ -101,15 +102,19 @@ TEST(SceneOcclusion, RowsSeenAlongTheirLineHaveObjectsHidingEachOther) {
       alone.objects.push_back(object);
       const RangeImage one = render(alone, camera, g.sensor, rng);
       for (std::size_t i = 0; i < one.labels.size(); ++i)
-        hidden += one.labels[i] == object.label && all.labels[i] >= 20 && all.labels[i] != object.label ? 1 : 0;
+        hidden +=
+            one.labels[i] == object.label && all.labels[i] >= 20 && all.labels[i] != object.label
+                ? 1
+                : 0;
     }
     scenes_with_occlusion += hidden > 10 ? 1 : 0;
   }
   EXPECT_GE(scenes_with_occlusion, 4u);
 }
 
-INSTANTIATE_TEST_SUITE_P(ObjectOrder, SceneOcclusion, ::testing::Bool(),
-                         [](const auto& info) { return info.param ? "box_first" : "sphere_first"; });
+INSTANTIATE_TEST_SUITE_P(ObjectOrder, SceneOcclusion, ::testing::Bool(), [](const auto& info) {
+  return info.param ? "box_first" : "sphere_first";
+});
 
 }  // namespace
 }  // namespace cloudshape::synth

@@ -28,7 +28,8 @@ GeneratedScene generate(SceneLayout layout, std::uint64_t seed, std::size_t coun
 double deepest_penetration(const SolidSpec& a, const SolidSpec& b) {
   std::mt19937_64 rng(7);
   double worst = 1e300;
-  for (const auto& p : sample_solid_surface(a, 4000, rng)) worst = std::min(worst, testing::surface_residual(b, p));
+  for (const auto& p : sample_solid_surface(a, 4000, rng))
+    worst = std::min(worst, testing::surface_residual(b, p));
   return worst;
 }
 
@@ -36,7 +37,9 @@ void expect_no_overlap(const GeneratedScene& g) {
   const auto& objects = g.scene.objects;
   for (std::size_t i = 0; i < objects.size(); ++i)
     for (std::size_t j = 0; j < objects.size(); ++j)
-      if (i != j) EXPECT_GE(deepest_penetration(objects[i].solid, objects[j].solid), -1e-9) << i << " in " << j;
+      if (i != j)
+        EXPECT_GE(deepest_penetration(objects[i].solid, objects[j].solid), -1e-9)
+            << i << " in " << j;
 }
 
 constexpr double kTol = 1e-12;  // of a scene whose unit is 1
@@ -78,7 +81,8 @@ TEST(SceneRelations, StackedBoxRestsOnTheLowerOne) {
       EXPECT_NEAR(testing::surface_residual(lower, under), 0.0, kTol) << "seed " << seed;
       const Eigen::Vector3d q = testing::to_local(lower.pose, under);
       for (int k = 0; k < 3; ++k)
-        if (std::abs(lower.pose.axes(k, 2)) < 0.5) EXPECT_LT(std::abs(q[k]), 0.25 * lower.dimensions[k].second);
+        if (std::abs(lower.pose.axes(k, 2)) < 0.5)
+          EXPECT_LT(std::abs(q[k]), 0.25 * lower.dimensions[k].second);
     }
     // The bottom box and the objects beside the stack stand on the table.
     EXPECT_NEAR(lowest(g.scene.objects[0].solid, kZ), 0.0, kTol);
@@ -97,7 +101,8 @@ TEST(SceneRelations, ObjectsAgainstAWallTouchItAndRestOnThePlane) {
       ASSERT_NE(wall, nullptr);
       // The walls stand at +y (back) and +x (side): the solid reaches the wall's plane exactly.
       const Eigen::Vector3d towards = wall->normal().cwiseAbs();
-      EXPECT_NEAR(highest(s, towards), towards.dot(wall->center), kTol) << "seed " << seed << " wall " << label;
+      EXPECT_NEAR(highest(s, towards), towards.dot(wall->center), kTol)
+          << "seed " << seed << " wall " << label;
     }
     for (const auto& o : g.scene.objects) EXPECT_NEAR(lowest(o.solid, kZ), 0.0, kTol);
     expect_no_overlap(g);

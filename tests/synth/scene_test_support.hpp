@@ -17,7 +17,8 @@ inline CaptureOptions small_camera() {
 }
 
 inline SceneCapture capture(SceneLayout layout, std::uint64_t seed, double scale = 1.0,
-                            CaptureOptions options = small_camera(), std::size_t count = 3, int walls = -1) {
+                            CaptureOptions options = small_camera(), std::size_t count = 3,
+                            int walls = -1) {
   SceneRecipe recipe;
   recipe.layout = layout;
   recipe.seed = seed;
@@ -34,7 +35,8 @@ inline double plane_distance(const SceneRectangle& r, const Eigen::Vector3d& p) 
 }
 inline bool within(const SceneRectangle& r, const Eigen::Vector3d& p, double tolerance) {
   const Eigen::Vector3d d = p - r.center;
-  return std::abs(d.dot(r.u)) <= r.half_u + tolerance && std::abs(d.dot(r.v)) <= r.half_v + tolerance;
+  return std::abs(d.dot(r.u)) <= r.half_u + tolerance &&
+         std::abs(d.dot(r.v)) <= r.half_v + tolerance;
 }
 
 inline const SceneObject* object_with(const Scene& scene, std::uint32_t label) {

@@ -34,7 +34,8 @@ TEST_P(SceneTruth, EveryLabelledPointLiesOnItsSurfaceAndIsTheFirstHit) {
     if (label >= 20) {
       const SceneObject* o = testing::object_with(c.scene, label);
       ASSERT_NE(o, nullptr) << label;
-      ASSERT_NEAR(testing::surface_residual(o->solid, p), 0.0, tol) << "pixel " << i << " label " << label;
+      ASSERT_NEAR(testing::surface_residual(o->solid, p), 0.0, tol)
+          << "pixel " << i << " label " << label;
     } else {
       const SceneRectangle* r = testing::structure_with(c.scene, label);
       ASSERT_NE(r, nullptr) << label;
@@ -42,11 +43,13 @@ TEST_P(SceneTruth, EveryLabelledPointLiesOnItsSurfaceAndIsTheFirstHit) {
       ASSERT_TRUE(testing::within(*r, p, tol)) << "pixel " << i;
     }
     for (const auto& o : c.scene.objects)
-      ASSERT_GE(testing::surface_residual(o.solid, p), -tol) << "pixel " << i << " inside " << o.label;
+      ASSERT_GE(testing::surface_residual(o.solid, p), -tol)
+          << "pixel " << i << " inside " << o.label;
     // The sight line from the sensor (the origin) stays out of every solid before the point.
     for (int k = 1; k < 64; ++k) {
       const Eigen::Vector3d q = p * (k / 64.0);
-      for (const auto& o : c.scene.objects) blocked += testing::surface_residual(o.solid, q) < -tol ? 1 : 0;
+      for (const auto& o : c.scene.objects)
+        blocked += testing::surface_residual(o.solid, q) < -tol ? 1 : 0;
     }
   }
   EXPECT_EQ(blocked, 0u);
@@ -115,8 +118,8 @@ TEST(SceneTruth, QuantisedDepthsTakeDisparitySteps) {
 }
 
 // Whether one of `samples` points of the open segment from a to b lies inside a solid.
-bool segment_blocked(const Scene& scene, const Eigen::Vector3d& a, const Eigen::Vector3d& b, double tol,
-                     int samples) {
+bool segment_blocked(const Scene& scene, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                     double tol, int samples) {
   for (int k = 1; k < samples; ++k) {
     const Eigen::Vector3d q = a + (b - a) * (static_cast<double>(k) / samples);
     for (const auto& o : scene.objects)
@@ -136,10 +139,12 @@ TEST(SceneTruth, ProjectorShadowsEmptyExactlyThePixelsTheProjectorCannotLight) {
     if (shaded.image.labels[i] != 0) {
       ASSERT_EQ(shaded.image.labels[i], lit.image.labels[i]);
       ASSERT_EQ(shaded.image.points[i], lit.image.points[i]);
-      ASSERT_FALSE(segment_blocked(shaded.scene, projector, shaded.image.points[i], 1e-9, 256)) << "pixel " << i;
+      ASSERT_FALSE(segment_blocked(shaded.scene, projector, shaded.image.points[i], 1e-9, 256))
+          << "pixel " << i;
     } else if (lit.image.labels[i] != 0) {
       ++removed;
-      removed_and_blocked += segment_blocked(lit.scene, projector, lit.image.points[i], 0.0, 2000) ? 1 : 0;
+      removed_and_blocked +=
+          segment_blocked(lit.scene, projector, lit.image.points[i], 0.0, 2000) ? 1 : 0;
     }
   }
   // Shadows fall beside the objects; sampling the segment may miss a shadow's thin edge.

@@ -41,7 +41,8 @@ std::string sidecar_path(const std::string& cloud_path) {
 
 void run_scene(const SceneArgs& args) {
   if (std::filesystem::path(args.output).extension() != ".pcd")
-    throw std::invalid_argument(args.output + ": a scene is written as .pcd (it carries a label field)");
+    throw std::invalid_argument(args.output +
+                                ": a scene is written as .pcd (it carries a label field)");
   const auto encoding = parse_pcd_encoding(args.pcd_encoding);
   const auto layout = synth::scene_layout_from_string(args.layout);
   if (!layout) throw std::invalid_argument("--layout: unknown layout '" + args.layout + "'");
@@ -67,7 +68,8 @@ void run_scene(const SceneArgs& args) {
   options.rings = args.rings;
   const auto elevation = parse_numbers(args.elevation, "--elevation");
   if (elevation.size() != 2 || !(elevation[0] <= elevation[1]))
-    throw std::invalid_argument("--elevation: expected LOW,HIGH degrees, got '" + args.elevation + "'");
+    throw std::invalid_argument("--elevation: expected LOW,HIGH degrees, got '" + args.elevation +
+                                "'");
   options.min_elevation_deg = elevation[0];
   options.max_elevation_deg = elevation[1];
   options.azimuth_step_deg = args.azimuth_step;
@@ -76,10 +78,12 @@ void run_scene(const SceneArgs& args) {
 
   const synth::SceneCapture capture = synth::capture_scene(recipe, options);
   const auto& image = capture.image;
-  io::write_labelled_pcd(args.output, image.points, image.labels, image.width, image.height, encoding);
+  io::write_labelled_pcd(args.output, image.points, image.labels, image.width, image.height,
+                         encoding);
   const std::string source = std::filesystem::path(args.output).filename().string();
   write_json(ground_truth_path(args.output),
-             synth::scene_truth_json(source, recipe, capture.generated, capture.scene, image, capture.sensor));
+             synth::scene_truth_json(source, recipe, capture.generated, capture.scene, image,
+                                     capture.sensor));
   write_json(sidecar_path(args.output), synth::scene_groups_json(capture.scene, image));
 }
 
@@ -89,13 +93,17 @@ void add_scene_command(CLI::App& app) {
   auto args = std::make_shared<SceneArgs>();
   CLI::App* cmd = app.add_subcommand(
       "scene",
-      "Objects on a table (or floor) among walls, seen by one depth camera (or a lidar); writes OUT.pcd "
+      "Objects on a table (or floor) among walls, seen by one depth camera (or a lidar); writes "
+      "OUT.pcd "
       "(x y z label, organized), OUT.json (truth) and OUT.truth.json (label groups).");
   cmd->add_option("--layout", args->layout, "touching, stacked, row, wall, random or lidar")
       ->capture_default_str();
-  cmd->add_option("--count", args->count, "Objects, 1-5 (touching, stacked: 2-5)")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Random seed: proportions, poses, camera")->capture_default_str();
-  cmd->add_option("--scale", args->scale, "The scene's unit: 1 = metres, 1000 = the same scene in mm")
+  cmd->add_option("--count", args->count, "Objects, 1-5 (touching, stacked: 2-5)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Random seed: proportions, poses, camera")
+      ->capture_default_str();
+  cmd->add_option("--scale", args->scale,
+                  "The scene's unit: 1 = metres, 1000 = the same scene in mm")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--walls", args->walls, "0, 1 or 2 walls (default: wall 1, lidar 2, others 0)")
@@ -107,15 +115,20 @@ void add_scene_command(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   cmd->add_option("--fov", args->fov, "Camera field of view H,V (degrees)")->capture_default_str();
-  cmd->add_option("--max-depth", args->max_depth,
-                  "Nothing seen beyond this depth (camera) or range (lidar), in metres x scale; 0: no limit")
+  cmd->add_option(
+         "--max-depth", args->max_depth,
+         "Nothing seen beyond this depth (camera) or range (lidar), in metres x scale; 0: no limit")
       ->check(CLI::NonNegativeNumber);
   cmd->add_option("--depth-noise", args->depth_noise,
                   "Depth noise sigma = K z^2 (z in metres x scale; Kinect about 0.0028)")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--quantize", args->quantize, "Kinect disparity quantisation (1/8 px, 7.5 cm baseline)");
-  cmd->add_flag("--shadows", args->shadows, "Kinect projector shadows (projector 7.5 cm beside the camera)");
-  cmd->add_option("--rings", args->rings, "Lidar beams")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_flag("--quantize", args->quantize,
+                "Kinect disparity quantisation (1/8 px, 7.5 cm baseline)");
+  cmd->add_flag("--shadows", args->shadows,
+                "Kinect projector shadows (projector 7.5 cm beside the camera)");
+  cmd->add_option("--rings", args->rings, "Lidar beams")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   cmd->add_option("--elevation", args->elevation, "Lidar beam elevations LOW,HIGH (degrees)")
       ->capture_default_str();
   cmd->add_option("--azimuth-step", args->azimuth_step, "Lidar azimuth step (degrees)")
@@ -123,7 +136,8 @@ void add_scene_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--range-noise", args->range_noise, "Lidar range sigma, metres x scale")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_flag("--organized", args->organized, "Lidar: write the rings x azimuth grid, NaN for no return");
+  cmd->add_flag("--organized", args->organized,
+                "Lidar: write the rings x azimuth grid, NaN for no return");
   cmd->add_option("-o,--output", args->output, "Output cloud (.pcd)")->required();
   cmd->add_option("--pcd-encoding", args->pcd_encoding, "ascii, binary or binary_compressed")
       ->capture_default_str();
