@@ -16,7 +16,7 @@ struct CaptureOptions {
   std::size_t width = 640, height = 480;
   double fov_x_deg = 58.0, fov_y_deg = 45.0;
   double max_depth = std::numeric_limits<double>::infinity();
-  double depth_noise = 0.0;  // sigma = depth_noise * z^2 with z in reference units (Kinect ~0.0028)
+  double depth_noise = 0.0;  // sigma = depth_noise * z^2 with z in reference units (Kinect ~0.0019)
   bool quantize = false;     // Kinect disparity steps: baseline 0.075, 1/8 pixel
   bool shadows = false;      // Kinect projector shadows: the projector 0.075 beside the camera
   std::size_t rings = 32;

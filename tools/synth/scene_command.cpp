@@ -119,8 +119,9 @@ void add_scene_command(CLI::App& app) {
          "--max-depth", args->max_depth,
          "Nothing seen beyond this depth (camera) or range (lidar), in metres x scale; 0: no limit")
       ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--depth-noise", args->depth_noise,
-                  "Depth noise sigma = K z^2 (z in metres x scale; Kinect about 0.0028)")
+  cmd->add_option(
+         "--depth-noise", args->depth_noise,
+         "Depth noise sigma = K z^2, sigma and z in metres (times --scale); Kinect about 0.0019")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--quantize", args->quantize,
                 "Kinect disparity quantisation (1/8 px, 7.5 cm baseline)");
