@@ -4,6 +4,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <vector>
 
 namespace cloudshape::synth {
 
@@ -25,6 +26,30 @@ bool in_shadow(const SceneRayCaster& caster, const Eigen::Vector3d& projector,
   const SceneHit hit = caster.cast(projector, to_point / distance, distance);
   // The light's own hit on p's surface comes back at `distance` to rounding.
   return hit.label != 0 && hit.t < distance * (1.0 - 1e-9);
+}
+
+// Depth edges blur as a Kinect's do: a pixel beside a jump of more than 5% of its depth takes,
+// with probability `share`, a depth drawn between its own and its neighbour's across the jump.
+std::vector<double> with_flying_pixels(const std::vector<double>& depth, std::size_t w,
+                                       std::size_t h, double share, std::mt19937_64& rng) {
+  std::vector<double> out = depth;
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (std::size_t i = 0; i < w * h; ++i) {
+    if (!std::isfinite(depth[i])) continue;
+    const std::size_t row = i / w, column = i % w;
+    double across = depth[i];
+    const auto consider = [&](std::size_t j) {
+      if (std::isfinite(depth[j]) && std::abs(depth[j] - depth[i]) > 0.05 * depth[i] &&
+          std::abs(depth[j] - depth[i]) > std::abs(across - depth[i]))
+        across = depth[j];
+    };
+    if (column > 0) consider(i - 1);
+    if (column + 1 < w) consider(i + 1);
+    if (row > 0) consider(i - w);
+    if (row + 1 < h) consider(i + w);
+    if (across != depth[i] && u(rng) < share) out[i] = depth[i] + u(rng) * (across - depth[i]);
+  }
+  return out;
 }
 
 }  // namespace
@@ -65,38 +90,42 @@ RangeImage render(const Scene& scene, const DepthCamera& camera, const SensorPos
                   std::mt19937_64& rng) {
   const Scene local = transformed(scene, pose.axes, pose.position);
   const SceneRayCaster caster(local);
-  RangeImage image{camera.width, camera.height, {}, {}};
-  image.points.reserve(camera.width * camera.height);
-  image.labels.reserve(camera.width * camera.height);
-  std::normal_distribution<double> gauss(0.0, 1.0);
-  const double focal_baseline = camera.focal_x() * camera.baseline;
+  const std::size_t w = camera.width, h = camera.height;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> depth(w * h, nan);
+  RangeImage image{w, h, {}, std::vector<std::uint32_t>(w * h, 0)};
   const Eigen::Vector3d projector(camera.projector_offset, 0.0, 0.0);
-  for (std::size_t row = 0; row < camera.height; ++row) {
-    for (std::size_t column = 0; column < camera.width; ++column) {
+  for (std::size_t row = 0; row < h; ++row) {
+    for (std::size_t column = 0; column < w; ++column) {
       const Eigen::Vector3d ray = camera.pixel_ray(column, row);
       const double length = ray.norm();
       // Range along the unit ray up to the depth limit (depth = range / length since ray.z = 1).
       const SceneHit hit =
           caster.cast(Eigen::Vector3d::Zero(), ray / length, camera.max_depth * length);
-      if (hit.label == 0) {
-        image.points.push_back(nan_point());
-        image.labels.push_back(0);
+      if (hit.label == 0) continue;
+      if (camera.projector_offset > 0.0 && in_shadow(caster, projector, hit.t * ray / length))
         continue;
-      }
-      if (camera.projector_offset > 0.0 && in_shadow(caster, projector, hit.t * ray / length)) {
-        image.points.push_back(nan_point());
-        image.labels.push_back(0);
-        continue;
-      }
-      double z = hit.t / length;
-      if (camera.noise_k > 0.0) z += camera.noise_k * z * z * gauss(rng);
-      if (focal_baseline > 0.0) {
-        const double steps = std::max(1.0, std::round(focal_baseline / z / camera.disparity_step));
-        z = focal_baseline / (steps * camera.disparity_step);
-      }
-      image.points.push_back(z * ray);
-      image.labels.push_back(hit.label);
+      depth[row * w + column] = hit.t / length;
+      image.labels[row * w + column] = hit.label;
     }
+  }
+  if (camera.flying_pixels > 0.0)
+    depth = with_flying_pixels(depth, w, h, camera.flying_pixels, rng);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const double focal_baseline = camera.focal_x() * camera.baseline;
+  image.points.reserve(w * h);
+  for (std::size_t i = 0; i < w * h; ++i) {
+    double z = depth[i];
+    if (!std::isfinite(z)) {
+      image.points.push_back(nan_point());
+      continue;
+    }
+    if (camera.noise_k > 0.0) z += camera.noise_k * z * z * gauss(rng);
+    if (focal_baseline > 0.0) {
+      const double steps = std::max(1.0, std::round(focal_baseline / z / camera.disparity_step));
+      z = focal_baseline / (steps * camera.disparity_step);
+    }
+    image.points.push_back(z * camera.pixel_ray(i % w, i / w));
   }
   return image;
 }

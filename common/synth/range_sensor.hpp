@@ -37,6 +37,9 @@ struct DepthCamera {
   // A structured-light camera sees only what its projector lights: with a projector this far
   // along the camera's +x, pixels in the projector's shadow are empty. 0 for none.
   double projector_offset = 0.0;
+  // Share of the pixels beside a depth jump that fly: their depth falls between the two
+  // surfaces (they keep their pixel's label but lie on no surface). 0 for none.
+  double flying_pixels = 0.0;
 
   // Direction of pixel (column, row) in the camera frame, with z = 1.
   Eigen::Vector3d pixel_ray(std::size_t column, std::size_t row) const;

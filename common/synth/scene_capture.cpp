@@ -61,6 +61,7 @@ SceneCapture capture_scene(const SceneRecipe& recipe, const CaptureOptions& opti
     camera.noise_k = options.depth_noise / unit;
     camera.baseline = options.quantize ? 0.075 * unit : 0.0;
     camera.projector_offset = options.shadows ? 0.075 * unit : 0.0;
+    camera.flying_pixels = options.flying_pixels;
     capture.image = render(capture.generated.scene, camera, pose, rng);
     capture.sensor = {
         {"type", "depth_camera"},

@@ -19,6 +19,7 @@ struct CaptureOptions {
   double depth_noise = 0.0;  // sigma = depth_noise * z^2 with z in reference units (Kinect ~0.0019)
   bool quantize = false;     // Kinect disparity steps: baseline 0.075, 1/8 pixel
   bool shadows = false;      // Kinect projector shadows: the projector 0.075 beside the camera
+  double flying_pixels = 0.0;  // share of the pixels at depth jumps given a depth in between
   std::size_t rings = 32;
   double min_elevation_deg = -30.0, max_elevation_deg = 10.0, azimuth_step_deg = 0.2;
   double max_range = std::numeric_limits<double>::infinity();

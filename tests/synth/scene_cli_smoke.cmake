@@ -4,7 +4,8 @@ file(REMOVE_RECURSE "${WORK_DIR}")
 file(MAKE_DIRECTORY "${WORK_DIR}")
 execute_process(
   COMMAND "${SYNTH}" scene --layout touching --count 3 --seed 2 --width 160 --height 120
-          --depth-noise 0.003 --quantize --shadows -o "${WORK_DIR}/touching.pcd"
+          --depth-noise 0.003 --quantize --shadows --flying-pixels 0.5
+          -o "${WORK_DIR}/touching.pcd"
   RESULT_VARIABLE status ERROR_VARIABLE error)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "cloudshape-synth scene exited with ${status}: ${error}")

@@ -1,6 +1,6 @@
 // The organized grid: pixel i of a camera frame lies on the ray of pixel i (noise and
-// quantisation included), a lidar return on its ring's beam; and the labelled PCD written from a
-// frame reads back with the same grid, the same points and the same labels.
+// quantisation and flying pixels included), a lidar return on its ring's beam; and the labelled PCD
+// written from a frame reads back with the same grid, the same points and the same labels.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,6 +16,7 @@ TEST(SceneGrid, EveryPixelLiesOnItsOwnRay) {
   auto options = testing::small_camera();
   options.depth_noise = 0.003;
   options.quantize = true;
+  options.flying_pixels = 0.5;
   const SceneCapture c = testing::capture(SceneLayout::stacked, 2, 1.0, options);
   ASSERT_EQ(c.image.width, 160u);
   ASSERT_EQ(c.image.height, 120u);

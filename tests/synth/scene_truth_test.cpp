@@ -152,5 +152,31 @@ TEST(SceneTruth, ProjectorShadowsEmptyExactlyThePixelsTheProjectorCannotLight) {
   EXPECT_GE(removed_and_blocked, 0.9 * removed);
 }
 
+TEST(SceneTruth, FlyingPixelsFallBetweenTheSurfacesOfADepthJump) {
+  auto options = testing::small_camera();
+  const SceneCapture clean = capture(SceneLayout::stacked, 7, 1.0, options);
+  options.flying_pixels = 1.0;
+  const SceneCapture flying = capture(SceneLayout::stacked, 7, 1.0, options);
+  ASSERT_EQ(clean.image.labels, flying.image.labels);
+  const std::size_t w = 160, h = 120;
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < w * h; ++i) {
+    if (clean.image.labels[i] == 0 || clean.image.points[i] == flying.image.points[i]) continue;
+    ++moved;
+    const double z = clean.image.points[i].z(), fz = flying.image.points[i].z();
+    bool between = false;
+    for (const long step : {-1L, 1L, -static_cast<long>(w), static_cast<long>(w)}) {
+      const long j = static_cast<long>(i) + step;
+      if (j < 0 || j >= static_cast<long>(w * h) || (std::abs(step) == 1 && j / w != i / w))
+        continue;
+      const double nz = clean.image.points[j].z();
+      if (!std::isfinite(nz) || std::abs(nz - z) <= 0.05 * z) continue;
+      between = between || (fz - z) * (fz - nz) <= 0.0;
+    }
+    ASSERT_TRUE(between) << "pixel " << i << " moved off every jump";
+  }
+  EXPECT_GT(moved, 100u);
+}
+
 }  // namespace
 }  // namespace cloudshape::synth

@@ -26,6 +26,7 @@ struct SceneArgs {
   double depth_noise = 0.0;
   bool quantize = false;
   bool shadows = false;
+  double flying_pixels = 0.0;
   std::size_t rings = 32;
   std::string elevation = "-30,10";
   double azimuth_step = 0.2;
@@ -65,6 +66,7 @@ void run_scene(const SceneArgs& args) {
   options.depth_noise = args.depth_noise;
   options.quantize = args.quantize;
   options.shadows = args.shadows;
+  options.flying_pixels = args.flying_pixels;
   options.rings = args.rings;
   const auto elevation = parse_numbers(args.elevation, "--elevation");
   if (elevation.size() != 2 || !(elevation[0] <= elevation[1]))
@@ -127,6 +129,10 @@ void add_scene_command(CLI::App& app) {
                 "Kinect disparity quantisation (1/8 px, 7.5 cm baseline)");
   cmd->add_flag("--shadows", args->shadows,
                 "Kinect projector shadows (projector 7.5 cm beside the camera)");
+  cmd->add_option("--flying-pixels", args->flying_pixels,
+                  "0..1: share of the pixels at depth jumps given a depth between the two surfaces "
+                  "(they keep their label)")
+      ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--rings", args->rings, "Lidar beams")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
