@@ -150,6 +150,8 @@ GeneratedScene make_scene(const SceneRecipe& recipe) {
   if (!(recipe.scale > 0.0) || !std::isfinite(recipe.scale))
     throw std::invalid_argument("--scale: must be positive and finite");
   if (recipe.walls < -1 || recipe.walls > 2) throw std::invalid_argument("--walls: 0, 1 or 2");
+  if (recipe.layout == SceneLayout::wall && recipe.walls == 0)
+    throw std::invalid_argument("--walls: the wall layout stands its objects against 1 or 2 walls");
   const int walls = recipe.walls >= 0                     ? recipe.walls
                     : recipe.layout == SceneLayout::wall  ? 1
                     : recipe.layout == SceneLayout::lidar ? 2

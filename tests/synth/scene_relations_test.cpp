@@ -128,6 +128,7 @@ TEST(SceneRelations, ThePlaneIsLargerThanTheObjectsByAMargin) {
 TEST(SceneRelations, CountAndScaleAreChecked) {
   EXPECT_THROW(generate(SceneLayout::touching, 1, 1), std::invalid_argument);
   EXPECT_THROW(generate(SceneLayout::row, 1, 6), std::invalid_argument);
+  EXPECT_THROW(generate(SceneLayout::wall, 1, 3, 0), std::invalid_argument);
   SceneRecipe bad;
   bad.scale = 0.0;
   EXPECT_THROW(make_scene(bad), std::invalid_argument);
