@@ -1,10 +1,12 @@
 #include "pipeline/classify.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/circle.hpp"
 #include "geometry/pca.hpp"
+#include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -60,6 +62,44 @@ std::vector<Shape> shapes_from_faces(const PlaneSegmentation& planes, double fac
   else if (parallel_pair) out = {Shape::cylinder, Shape::cone};
   else out = {Shape::cone, Shape::cylinder};
   return out;
+}
+
+// Reads the outline of every face large enough to have one worth reading.
+void read_outlines(const PointList& cloud, const PlaneSegmentation& planes,
+                   const config::ClassifyConfig& cfg, Classification& out) {
+  std::optional<std::size_t> circle;
+  FaceOutline circle_outline;
+  bool rectangle = false;
+  const double min_points = cfg.outline_min_share * static_cast<double>(cloud.size());
+  for (std::size_t k = 0; k < planes.planes.size(); ++k) {
+    const DetectedPlane& p = planes.planes[k];
+    if (!p.is_face || static_cast<double>(p.inliers.size()) < min_points) continue;
+    const FaceOutline o = face_outline(cloud, p, cfg.outline_circle_rms, cfg.outline_rect_fill);
+    if (o.kind == OutlineKind::rectangle) rectangle = true;
+    if (o.kind == OutlineKind::circle &&
+        (!circle || p.inliers.size() > planes.planes[*circle].inliers.size())) {
+      circle = k;
+      circle_outline = o;
+    }
+  }
+  if (circle && rectangle) return;
+  out.rectangular_face = rectangle;
+  out.cap_plane = circle;
+  out.cap_outline = circle_outline;
+}
+
+// Least over middle eigenvalue of the normals' scatter, off the flat faces: a sphere's normals
+// point every way (~1), a cylinder's or an open cup's all lie across its axis (~0).
+double normal_spread(const PointList& cloud, const PlaneSegmentation& planes) {
+  std::vector<const DetectedPlane*> faces;
+  for (const auto& p : planes.planes)
+    if (p.is_face) faces.push_back(&p);
+  const auto samples = detail::sample_normals(cloud, detail::points_off_faces(cloud, faces), 800);
+  if (samples.size() < 8) return 1.0;
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (const auto& s : samples) m.noalias() += s.normal * s.normal.transpose();
+  const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m).eigenvalues();  // ascending
+  return ev[1] > 0.0 ? ev[0] / ev[1] : 1.0;
 }
 
 }  // namespace
@@ -145,10 +185,30 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
     out.sphere_test = sphere->rms < cfg.sphere_max_rms * sphere->radius &&
                       out.face_fraction <= cfg.sphere_max_face_fraction;
   }
+  read_outlines(cloud, planes, cfg, out);
+  if (out.sphere_test && (out.cap_plane || out.rectangular_face ||
+                          normal_spread(cloud, planes) < cfg.sphere_min_normal_spread))
+    out.sphere_test = false;
   out.shape = out.sphere_test ? Shape::sphere : shape_from_keypoints(out.counts);
+  if (out.cap_plane) {
+    // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
+    out.shape = Shape::cylinder;
+    out.candidates = {Shape::cylinder, Shape::cone};
+    return out;
+  }
   add_unique(out.candidates, out.shape);
   for (Shape s : shapes_from_faces(planes, out.face_fraction, cfg)) add_unique(out.candidates, s);
   for (Shape s : kSolidShapes) add_unique(out.candidates, s);
+  if (out.rectangular_face) {
+    // No solid of revolution has a rectangular flat face.
+    out.candidates.erase(std::remove_if(out.candidates.begin(), out.candidates.end(),
+                                        [](Shape s) {
+                                          return s == Shape::cylinder || s == Shape::cone ||
+                                                 s == Shape::sphere;
+                                        }),
+                         out.candidates.end());
+    if (out.shape == Shape::cylinder || out.shape == Shape::cone) out.shape = out.candidates.front();
+  }
   return out;
 }
 
