@@ -93,7 +93,6 @@ void visit_fields(ClassifyConfig& c, F&& f) {
   f("outline_min_share", c.outline_min_share);
   f("outline_circle_rms", c.outline_circle_rms);
   f("outline_rect_fill", c.outline_rect_fill);
-  f("sphere_min_normal_spread", c.sphere_min_normal_spread);
 }
 
 template <class F>

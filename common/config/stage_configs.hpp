@@ -117,7 +117,6 @@ struct ClassifyConfig {
   double outline_min_share = 0.1;        // faces holding this share of the points have their outline read (circle or rectangle)
   double outline_circle_rms = 0.08;      // outline RMS off its circle (share of the radius) at most this: a circle
   double outline_rect_fill = 0.89;       // hull filling this share of its enclosing rectangle: a rectangle (a disc fills pi/4)
-  double sphere_min_normal_spread = 0.3; // sphere test: the normals' least over middle spread at least this (a cylinder's: ~0)
 };
 
 struct SolveConfig {

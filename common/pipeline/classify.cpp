@@ -1,12 +1,10 @@
 #include "pipeline/classify.hpp"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/circle.hpp"
 #include "geometry/pca.hpp"
-#include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -86,20 +84,6 @@ void read_outlines(const PointList& cloud, const PlaneSegmentation& planes,
   out.rectangular_face = rectangle;
   out.cap_plane = circle;
   out.cap_outline = circle_outline;
-}
-
-// Least over middle eigenvalue of the normals' scatter, off the flat faces: a sphere's normals
-// point every way (~1), a cylinder's or an open cup's all lie across its axis (~0).
-double normal_spread(const PointList& cloud, const PlaneSegmentation& planes) {
-  std::vector<const DetectedPlane*> faces;
-  for (const auto& p : planes.planes)
-    if (p.is_face) faces.push_back(&p);
-  const auto samples = detail::sample_normals(cloud, detail::points_off_faces(cloud, faces), 800);
-  if (samples.size() < 8) return 1.0;
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-  for (const auto& s : samples) m.noalias() += s.normal * s.normal.transpose();
-  const Eigen::Vector3d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m).eigenvalues();  // ascending
-  return ev[1] > 0.0 ? ev[0] / ev[1] : 1.0;
 }
 
 }  // namespace
@@ -186,9 +170,8 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
                       out.face_fraction <= cfg.sphere_max_face_fraction;
   }
   read_outlines(cloud, planes, cfg, out);
-  if (out.sphere_test && (out.cap_plane || out.rectangular_face ||
-                          normal_spread(cloud, planes) < cfg.sphere_min_normal_spread))
-    out.sphere_test = false;
+  // A sphere has no flat face.
+  if (out.cap_plane || out.rectangular_face) out.sphere_test = false;
   out.shape = out.sphere_test ? Shape::sphere : shape_from_keypoints(out.counts);
   if (out.cap_plane) {
     // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
