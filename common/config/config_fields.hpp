@@ -92,6 +92,7 @@ void visit_fields(ClassifyConfig& c, F&& f) {
   f("degenerate_thickness", c.degenerate_thickness);
   f("outline_min_share", c.outline_min_share);
   f("outline_circle_rms", c.outline_circle_rms);
+  f("outline_circle_harmonic", c.outline_circle_harmonic);
   f("outline_rect_fill", c.outline_rect_fill);
 }
 

@@ -116,6 +116,7 @@ struct ClassifyConfig {
   double degenerate_thickness = 0.5;     // spread (std dev, resolutions) below which the cloud is flat or a line
   double outline_min_share = 0.1;        // faces holding this share of the points have their outline read (circle or rectangle)
   double outline_circle_rms = 0.08;      // outline RMS off its circle (share of the radius) at most this: a circle
+  double outline_circle_harmonic = 0.04; // ... and no 3rd-8th angular harmonic of it above this share of the radius (a polygon's corners)
   double outline_rect_fill = 0.89;       // hull filling this share of its enclosing rectangle: a rectangle (a disc fills pi/4)
 };
 

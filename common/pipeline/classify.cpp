@@ -72,7 +72,7 @@ void read_outlines(const PointList& cloud, const PlaneSegmentation& planes,
   for (std::size_t k = 0; k < planes.planes.size(); ++k) {
     const DetectedPlane& p = planes.planes[k];
     if (!p.is_face || static_cast<double>(p.inliers.size()) < min_points) continue;
-    const FaceOutline o = face_outline(cloud, p, cfg.outline_circle_rms, cfg.outline_rect_fill);
+    const FaceOutline o = face_outline(cloud, p, cfg.outline_circle_rms, cfg.outline_circle_harmonic, cfg.outline_rect_fill);
     if (o.kind == OutlineKind::rectangle) rectangle = true;
     if (o.kind == OutlineKind::circle &&
         (!circle || p.inliers.size() > planes.planes[*circle].inliers.size())) {

@@ -90,7 +90,7 @@ std::vector<Vec2> perimeter_samples(const std::vector<Vec2>& h, std::size_t coun
 }  // namespace
 
 FaceOutline face_outline(const PointList& cloud, const DetectedPlane& face, double max_circle_rms,
-                         double min_rect_fill) {
+                         double max_circle_harmonic, double min_rect_fill) {
   FaceOutline out;
   if (face.inliers.size() < 10) return out;
   Eigen::Vector3d u, v;
@@ -131,8 +131,20 @@ FaceOutline face_outline(const PointList& cloud, const DetectedPlane& face, doub
   double sum = 0.0;
   for (const Vec2& p : s) sum += std::pow((p - c).norm() - out.radius, 2);
   out.circle_rms = std::sqrt(sum / static_cast<double>(s.size())) / out.radius;
+  for (int k = 3; k <= 8; ++k) {
+    double re = 0.0, im = 0.0;
+    for (const Vec2& p : s) {
+      const double angle = std::atan2(p.y() - c.y(), p.x() - c.x());
+      const double e = (p - c).norm() - out.radius;
+      re += e * std::cos(k * angle);
+      im += e * std::sin(k * angle);
+    }
+    const double amplitude = 2.0 * std::hypot(re, im) / static_cast<double>(s.size()) / out.radius;
+    out.polygon_harmonic = std::max(out.polygon_harmonic, amplitude);
+  }
   out.center = origin + c.x() * u + c.y() * v;
-  if (out.circle_rms <= max_circle_rms && out.rect_fill < min_rect_fill) out.kind = OutlineKind::circle;
+  if (out.circle_rms <= max_circle_rms && out.polygon_harmonic <= max_circle_harmonic && out.rect_fill < min_rect_fill)
+    out.kind = OutlineKind::circle;
   else if (out.rect_fill >= min_rect_fill) out.kind = OutlineKind::rectangle;
   return out;
 }
