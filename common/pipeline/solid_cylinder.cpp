@@ -1,6 +1,5 @@
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "geometry/circle.hpp"
 #include "pipeline/solids.hpp"
@@ -63,14 +62,14 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
   const double extreme_hi = along[along.size() - 1 - trim];
   double lo = extreme_lo, hi = extreme_hi;
   const double rim = in.cfg.rim_distance * in.resolution;
-  // A cap whose outline was read as a circle is the lid itself, seen whole: points beyond it are
-  // the flying pixels of its silhouette more often than a rim, and a rim would leave the lid
-  // inside the solid, unexplained.
-  const double rim_limit = cap_outline ? std::numeric_limits<double>::infinity() : rim;
+  std::vector<double> recessed;  // caps below a rim, along the axis from on_axis
   for (const DetectedPlane* cap : caps) {
     const double pos = detail::face_position(in.cloud, *cap, axis) - on_axis.dot(axis);
-    if (cap->plane.normal.dot(axis) > 0) hi = extreme_hi > pos + rim_limit ? extreme_hi : pos;
-    else lo = extreme_lo < pos - rim_limit ? extreme_lo : pos;
+    const bool top = cap->plane.normal.dot(axis) > 0;
+    const bool rimmed = top ? extreme_hi > pos + rim : extreme_lo < pos - rim;
+    if (top) hi = rimmed ? extreme_hi : pos;
+    else lo = rimmed ? extreme_lo : pos;
+    if (rimmed) recessed.push_back(pos);
   }
   FittedSolid out;
   out.shape = Shape::cylinder;
@@ -79,10 +78,17 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
   out.center = on_axis + 0.5 * (lo + hi) * axis;
   out.axes = detail::frame_from_axis(axis);
   const Point c = out.center;
-  out.signed_distance = [c, axis, radius, height](const Point& p) {
+  // A lid recessed below its rim is surface too (inside the solid's envelope): its points
+  // are explained by it, whether the rim is a real can's or the flying pixels of a Kinect lid.
+  for (double& pos : recessed) pos -= 0.5 * (lo + hi);
+  out.signed_distance = [c, axis, radius, height, recessed](const Point& p) {
     const Eigen::Vector3d d = p - c;
     const double h = d.dot(axis);
-    return std::max((d - h * axis).norm() - radius, std::abs(h) - 0.5 * height);
+    const double radial = (d - h * axis).norm();
+    double sd = std::max(radial - radius, std::abs(h) - 0.5 * height);
+    if (sd < 0.0 && radial <= radius)
+      for (double pos : recessed) sd = std::max(sd, -std::abs(h - pos));
+    return sd;
   };
   return out;
 }

@@ -62,7 +62,7 @@ bool right_shape(const std::string& cat, const std::string& shape) {
 }
 
 // Measured (config/pipeline.yaml at this commit): boxes 38/38, stacked 20/20, occluded 16/16,
-// cylinders 28/38; each floor is a few points below.
+// cylinders 29/38; each floor is a few points below.
 TEST(MosdSingleViews, GroundTruthObjectsNamedRightPerCategory) {
   if (data_missing()) GTEST_SKIP() << kDir << " not present";
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
@@ -81,7 +81,7 @@ TEST(MosdSingleViews, GroundTruthObjectsNamedRightPerCategory) {
     }
   }
   const std::map<std::string, double> floor = {
-      {"boxes", 0.94}, {"stacked", 0.94}, {"occluded", 0.90}, {"cylinders", 0.68}};
+      {"boxes", 0.94}, {"stacked", 0.94}, {"occluded", 0.90}, {"cylinders", 0.70}};
   for (const auto& [cat, min_share] : floor) {
     const auto [right, all] = tally[cat];
     ASSERT_GT(all, 0) << cat;
