@@ -129,6 +129,7 @@ struct SolveConfig {
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
+  double cap_circle_agreement = 0.1;     // the side's own circle is kept when centre and radius lie within this share of the cap circle's radius of it
   double min_side_share = 0.05;          // a cylinder with a circular cap takes its radius from the side when this share of the points is on it
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter

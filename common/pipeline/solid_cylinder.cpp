@@ -26,10 +26,26 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
     if (std::abs(f->plane.normal.dot(axis)) > cos_parallel(in)) across.push_back(f);
   const auto side = detail::points_off_faces(in.cloud, across, in.cfg.cap_band * in.resolution);
   std::optional<geometry::Circle3> circle;
+  if (side.size() >= 6) {
+    Point centroid = Point::Zero();
+    for (std::uint32_t i : side) centroid += in.cloud[i];
+    centroid /= static_cast<double>(side.size());
+    circle = geometry::fit_circle_in_plane(in.cloud, side, centroid, axis);
+  }
   if (cap_outline) {
-    circle = geometry::Circle3{cap_outline->center, axis, cap_outline->radius};
+    // The side's own circle where it agrees with the cap's (a wide arc places it best), else the
+    // cap's centre with the side's median distance from it (a short arc places no centre).
+    const geometry::Circle3 cap{cap_outline->center, axis, cap_outline->radius};
+    const double agree = in.cfg.cap_circle_agreement * cap.radius;
+    const auto off_axis = [&](const Point& p) {
+      const Eigen::Vector3d d = p - cap.center;
+      return (d - d.dot(axis) * axis).norm();
+    };
     const double min_side = std::max(6.0, in.cfg.min_side_share * static_cast<double>(in.cloud.size()));
-    if (static_cast<double>(side.size()) >= min_side) {
+    const bool side_agrees =
+        circle && off_axis(circle->center) <= agree && std::abs(circle->radius - cap.radius) <= agree;
+    if (!side_agrees && static_cast<double>(side.size()) >= min_side) {
+      circle = cap;
       std::vector<double> radial;
       radial.reserve(side.size());
       for (std::uint32_t i : side) {
@@ -38,13 +54,9 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
       }
       std::nth_element(radial.begin(), radial.begin() + radial.size() / 2, radial.end());
       circle->radius = radial[radial.size() / 2];
+    } else if (!side_agrees) {
+      circle = cap;
     }
-  } else {
-    if (side.size() < 6) return std::nullopt;
-    Point centroid = Point::Zero();
-    for (std::uint32_t i : side) centroid += in.cloud[i];
-    centroid /= static_cast<double>(side.size());
-    circle = geometry::fit_circle_in_plane(in.cloud, side, centroid, axis);
   }
   if (!circle) return std::nullopt;
   const Point on_axis = circle->center;
