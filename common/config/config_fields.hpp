@@ -92,6 +92,10 @@ void visit_fields(ClassifyConfig& c, F&& f) {
   f("sphere_max_face_fraction", c.sphere_max_face_fraction);
   f("polyhedron_face_fraction", c.polyhedron_face_fraction);
   f("degenerate_thickness", c.degenerate_thickness);
+  f("outline_min_share", c.outline_min_share);
+  f("outline_circle_rms", c.outline_circle_rms);
+  f("outline_circle_harmonic", c.outline_circle_harmonic);
+  f("outline_rect_fill", c.outline_rect_fill);
 }
 
 template <class F>
@@ -105,6 +109,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("face_slab", c.face_slab);
   f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
+  f("cap_circle_agreement", c.cap_circle_agreement);
+  f("min_side_share", c.min_side_share);
   f("max_size_ratio", c.max_size_ratio);
   f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);

@@ -72,6 +72,10 @@ struct ClassifyConfig {
   double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
   double polyhedron_face_fraction = 0.85;  // faces covering this fraction: a polyhedron
   double degenerate_thickness = 0.5;     // spread (std dev, resolutions) below which the cloud is flat or a line
+  double outline_min_share = 0.1;        // faces holding this share of the points have their outline read (circle or rectangle)
+  double outline_circle_rms = 0.08;      // outline RMS off its circle (share of the radius) at most this: a circle
+  double outline_circle_harmonic = 0.04; // ... and no 3rd-8th angular harmonic of it above this share of the radius (a polygon's corners)
+  double outline_rect_fill = 0.89;       // hull filling this share of its enclosing rectangle: a rectangle (a disc fills pi/4)
 };
 
 // Scene segmentation (common/segment): the cloud as a graph of nodes (pixels of an organized
@@ -110,6 +114,8 @@ struct SolveConfig {
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
+  double cap_circle_agreement = 0.1;     // the side's own circle is kept when centre and radius lie within this share of the cap circle's radius of it
+  double min_side_share = 0.05;          // a cylinder with a circular cap takes its radius from the side when this share of the points is on it
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
