@@ -5,13 +5,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "process.hpp"
+#include "shared_data.hpp"
 
 namespace cloudshape {
 namespace {
@@ -21,11 +21,6 @@ using Json = nlohmann::json;
 using testing::run_process;
 
 const std::string kBin = CLOUDSHAPE_BENCH_BIN;
-
-bool ci_run() {
-  const char* ci = std::getenv("CI");
-  return ci != nullptr && (std::string(ci) == "true" || std::string(ci) == "1");
-}
 
 struct Labelled {
   double x, y, z;
@@ -134,12 +129,9 @@ TEST_F(BenchScenes, ScenesRunInNaturalOrder) {
 }
 
 TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
-  const fs::path learn = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / "mosd_learn";
-  if (!fs::exists(learn / "learn0.pcd") || !fs::exists(learn / "learn33.pcd")) {
-    const std::string why = "shared data missing: " + learn.string();
-    if (ci_run()) FAIL() << why << " (CI=true requires it)";
-    GTEST_SKIP() << why << " (skipped outside CI)";
-  }
+  const fs::path learn = testing::shared_data_path("real/mosd_learn");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
   const fs::path d = sub("mosd");
   fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
   fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
