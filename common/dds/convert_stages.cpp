@@ -131,6 +131,17 @@ msg::ClassificationData to_msg(const pipeline::Classification& c) {
   m.reason(c.reason);
   m.face_fraction(c.face_fraction);
   m.sphere_test(c.sphere_test);
+  m.cap_plane(c.cap_plane ? static_cast<std::int32_t>(*c.cap_plane) : -1);
+  const pipeline::FaceOutline& o = c.cap_outline;
+  m.cap_outline().kind(o.kind == pipeline::OutlineKind::circle      ? msg::CIRCLE
+                       : o.kind == pipeline::OutlineKind::rectangle ? msg::RECTANGLE
+                                                                    : msg::UNDECIDED);
+  m.cap_outline().center({o.center.x(), o.center.y(), o.center.z()});
+  m.cap_outline().radius(o.radius);
+  m.cap_outline().circle_rms(o.circle_rms);
+  m.cap_outline().rect_fill(o.rect_fill);
+  m.cap_outline().polygon_harmonic(o.polygon_harmonic);
+  m.rectangular_face(c.rectangular_face);
   return m;
 }
 
@@ -152,6 +163,17 @@ pipeline::Classification from_msg(const msg::ClassificationData& m) {
   c.reason = m.reason();
   c.face_fraction = m.face_fraction();
   c.sphere_test = m.sphere_test();
+  if (m.cap_plane() >= 0) c.cap_plane = static_cast<std::size_t>(m.cap_plane());
+  const msg::FaceOutline& o = m.cap_outline();
+  c.cap_outline.kind = o.kind() == msg::CIRCLE      ? pipeline::OutlineKind::circle
+                       : o.kind() == msg::RECTANGLE ? pipeline::OutlineKind::rectangle
+                                                    : pipeline::OutlineKind::undecided;
+  c.cap_outline.center = Point(o.center()[0], o.center()[1], o.center()[2]);
+  c.cap_outline.radius = o.radius();
+  c.cap_outline.circle_rms = o.circle_rms();
+  c.cap_outline.rect_fill = o.rect_fill();
+  c.cap_outline.polygon_harmonic = o.polygon_harmonic();
+  c.rectangular_face = m.rectangular_face();
   return c;
 }
 

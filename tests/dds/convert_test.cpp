@@ -142,6 +142,9 @@ TEST(DdsConvert, ClassificationRoundTripIsExact) {
   pipeline::Classification c = box().classification;
   c.reason = "a reason";
   c.candidates = {pipeline::Shape::box, pipeline::Shape::cylinder, pipeline::Shape::unknown};
+  c.cap_plane = 3;
+  c.cap_outline = {pipeline::OutlineKind::circle, Point(0.25, -1.5, 2.0), 0.125, 0.03, 0.78, 0.01};
+  c.rectangular_face = true;
   const pipeline::Classification back = from_msg(to_msg(c));
   ASSERT_EQ(back.keypoints.size(), c.keypoints.size());
   for (std::size_t i = 0; i < c.keypoints.size(); ++i) {
@@ -158,6 +161,16 @@ TEST(DdsConvert, ClassificationRoundTripIsExact) {
   EXPECT_EQ(back.reason, c.reason);
   EXPECT_EQ(back.face_fraction, c.face_fraction);
   EXPECT_EQ(back.sphere_test, c.sphere_test);
+  EXPECT_EQ(back.cap_plane, c.cap_plane);
+  EXPECT_EQ(back.cap_outline.kind, c.cap_outline.kind);
+  EXPECT_EQ(back.cap_outline.center, c.cap_outline.center);
+  EXPECT_EQ(back.cap_outline.radius, c.cap_outline.radius);
+  EXPECT_EQ(back.cap_outline.circle_rms, c.cap_outline.circle_rms);
+  EXPECT_EQ(back.cap_outline.rect_fill, c.cap_outline.rect_fill);
+  EXPECT_EQ(back.cap_outline.polygon_harmonic, c.cap_outline.polygon_harmonic);
+  EXPECT_EQ(back.rectangular_face, c.rectangular_face);
+  c.cap_plane.reset();
+  EXPECT_FALSE(from_msg(to_msg(c)).cap_plane);
 }
 
 TEST(DdsConvert, EveryShapeNameComesBack) {
