@@ -140,12 +140,12 @@ class FaultRig {
     return true;
   }
 
-  // Stops echo after a grace period in which late duplicates would still arrive, then every
-  // service (each must exit 0); returns echo's lines.
+  // Called once inject saw every result: what still comes is a duplicate. The services stop
+  // first (each must exit 0), so echo hears every late one they sent until they were down
+  // rather than those of a guessed grace period; then echo. Returns echo's lines.
   std::vector<std::string> finish() {
-    std::this_thread::sleep_for(2s);
-    EXPECT_EQ(procs_.stop(echo_, 30s), 0) << read_text(dir_ + "/echo.log");
     for (const auto& [stage, pid] : pids_) EXPECT_EQ(procs_.stop(pid, 30s), 0) << stage;
+    EXPECT_EQ(procs_.stop(echo_, 30s), 0) << read_text(dir_ + "/echo.log");
     return lines_of(read_text(dir_ + "/echo.jsonl"));
   }
 
