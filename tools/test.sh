@@ -2,7 +2,7 @@
 # Installs what is missing, builds build/ (Release) and runs the tests with ctest.
 # Exit status 0 only if the build and every selected test pass. Idempotent.
 #
-#   tools/test.sh            # every test except those labelled "long"
+#   tools/test.sh            # every test except those labelled "long" or "bench"
 #   tools/test.sh --long     # every test
 #   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R)
 #   tools/test.sh --sanitize # ASan + UBSan build in build-sanitize/: unit tests, then process tests
@@ -84,8 +84,8 @@ ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=er
 if ((long)); then
   cs_log "tests: all (ctest ${ctest_args[*]})"
 else
-  ctest_args+=(-LE long)
-  cs_log "tests: all but label 'long' (ctest ${ctest_args[*]}); --long runs everything"
+  ctest_args+=(-LE 'long|bench')
+  cs_log "tests: all but labels 'long' and 'bench' (ctest ${ctest_args[*]}); --long runs everything"
 fi
 status=0
 ctest "${ctest_args[@]}" || status=$?
