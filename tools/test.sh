@@ -69,7 +69,10 @@ if ((sanitize)); then
   done
   units=$((SECONDS - start - built))
   cs_log "sanitized: process-level tests (ctest -R '$sanitize_process_tests')"
-  ctest --test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error -j "$CLOUDSHAPE_JOBS" \
+  # Fast DDS 2.9 deletes its statistics readers and writers through a base of another size
+  # inside libfastrtps (new-delete-type-mismatch at every endpoint deletion, not in our code;
+  # the unit-test programs above keep the check).
+  ASAN_OPTIONS="$ASAN_OPTIONS:new_delete_type_mismatch=0" ctest --test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error -j "$CLOUDSHAPE_JOBS" \
         --timeout "${CLOUDSHAPE_TEST_TIMEOUT:-600}" -R "$sanitize_process_tests" >&2 || failed+=(process-level)
   elapsed=$((SECONDS - start))
   times="build ${built}s, unit programs ${units}s, process tests $((elapsed - built - units))s"
