@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "geometry/point_cloud.hpp"
 
@@ -19,6 +21,12 @@ struct ReadLimits {
 struct CloudFile {
   PointList points;                    // finite points only, in file order
   std::size_t non_finite_dropped = 0;  // points with NaN/Inf in x, y or z
+  // A PCD with HEIGHT > 1 keeps its pixel layout (grid.pixel[i] is where points[i] sat);
+  // empty for every other file.
+  GridLayout grid;
+  // Per point, the value of an integer field named "label" (segmentation ground truth, as
+  // in the Object Segmentation Database) when the PCD has one; empty otherwise.
+  std::vector<std::uint32_t> labels;
   // "pcd-ascii", "pcd-binary", "pcd-binary_compressed", "ply-ascii",
   // "ply-binary_little_endian" or "xyz".
   std::string format;

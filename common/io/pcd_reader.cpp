@@ -1,5 +1,5 @@
 // Reads PCD point clouds (DATA ascii, binary or binary_compressed) into x/y/z points.
-// x, y and z may sit at any field position among other fields; non-finite points are dropped and counted.
+// x, y and z at any field position; non-finite points dropped and counted, pixels and labels kept.
 #include "io/pcd_reader.hpp"
 
 #include <lzf.h>
@@ -28,19 +28,50 @@ using detail::Scalar;
 // claiming more than that ratio is corrupt, and is rejected before its buffer is allocated.
 constexpr std::uint64_t kMaxLzfRatio = 88;
 
-void add_point(CloudFile& out, double x, double y, double z) {
-  if (std::isfinite(x) && std::isfinite(y) && std::isfinite(z)) {
-    out.points.emplace_back(x, y, z);
-  } else {
-    ++out.non_finite_dropped;
+// Keeps the finite points with, for an organized cloud, the pixel each came from, and the
+// ground-truth label of each when the file has a label field.
+class PointSink {
+ public:
+  PointSink(const PcdHeader& h, CloudFile& out) : out_(out), organized_(h.height > 1), labelled_(h.label) {
+    if (organized_) {
+      out_.grid.width = h.width;
+      out_.grid.height = h.height;
+    }
   }
-}
+
+  void reserve(std::size_t n) {
+    out_.points.reserve(n);
+    if (organized_) out_.grid.pixel.reserve(n);
+    if (labelled_) out_.labels.reserve(n);
+  }
+
+  // `index` is the point's position in the file; `label` is ignored without a label field.
+  void add(std::size_t index, double x, double y, double z, double label) {
+    if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z))) {
+      ++out_.non_finite_dropped;
+      return;
+    }
+    out_.points.emplace_back(x, y, z);
+    if (organized_) out_.grid.pixel.push_back(static_cast<std::uint32_t>(index));
+    if (labelled_) out_.labels.push_back(as_label(label));
+  }
+
+ private:
+  static std::uint32_t as_label(double v) {
+    return std::isfinite(v) && v >= 0.0 && v <= 4294967295.0 ? static_cast<std::uint32_t>(v) : 0;
+  }
+
+  CloudFile& out_;
+  bool organized_;
+  bool labelled_;
+};
 
 void read_ascii(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
+  PointSink sink(h, out);
   // Every value needs at least one character and one separator, which bounds the
   // reservation by the bytes actually present rather than by the declared count.
   const std::size_t present = (data.size() - h.data_offset) / (2 * h.values_per_point) + 1;
-  out.points.reserve(std::min(h.points, present));
+  sink.reserve(std::min(h.points, present));
 
   detail::LineCursor lines(data, h.data_offset, h.data_line);
   std::string_view line;
@@ -54,6 +85,7 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
     }
     detail::TokenCursor tokens(line);
     double xyz[3] = {0.0, 0.0, 0.0};
+    double label = 0.0;
     std::size_t seen = 0;
     for (std::size_t f = 0; f < h.fields.size(); ++f) {
       const int axis = f == h.xyz[0] ? 0 : f == h.xyz[1] ? 1 : f == h.xyz[2] ? 2 : -1;
@@ -69,13 +101,14 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
                                            detail::quoted(h.fields[f].name));
         }
         if (axis >= 0) xyz[axis] = detail::as_declared(value, h.fields[f].type);
+        if (h.label && f == *h.label) label = value;
       }
     }
     if (!tokens.at_end()) {
       throw ReadError(name, place, "too many values: expected " + std::to_string(h.values_per_point));
     }
+    sink.add(rows, xyz[0], xyz[1], xyz[2], label);
     ++rows;
-    add_point(out, xyz[0], xyz[1], xyz[2]);
   }
   if (rows < h.points) {
     throw ReadError(name, at_line(lines.next_line_number()),
@@ -84,23 +117,29 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
   }
 }
 
-// `stride` is the distance between consecutive values of one field: the record size for
-// the interleaved binary layout, the scalar size for the per-field compressed layout.
-void extract_points(const unsigned char* const starts[3], const std::size_t strides[3], const Scalar types[3],
-                    std::size_t count, CloudFile& out) {
-  out.points.reserve(count);
-  if (types[0] == Scalar::f32 && types[1] == Scalar::f32 && types[2] == Scalar::f32) {
-    for (std::size_t i = 0; i < count; ++i) {
-      add_point(out, detail::load_raw<float>(starts[0] + i * strides[0]),
-                detail::load_raw<float>(starts[1] + i * strides[1]),
-                detail::load_raw<float>(starts[2] + i * strides[2]));
+// Where one field's values start and how far apart they lie: the record size for the
+// interleaved binary layout, the scalar size for the per-field compressed layout.
+struct FieldColumn {
+  const unsigned char* start = nullptr;
+  std::size_t stride = 0;
+  Scalar type = Scalar::f32;
+
+  double at(std::size_t i) const { return detail::load_scalar(start + i * stride, type); }
+};
+
+void extract_points(const FieldColumn (&xyz)[3], const FieldColumn* label, const PcdHeader& h, CloudFile& out) {
+  PointSink sink(h, out);
+  sink.reserve(h.points);
+  const bool f32 = xyz[0].type == Scalar::f32 && xyz[1].type == Scalar::f32 && xyz[2].type == Scalar::f32;
+  for (std::size_t i = 0; i < h.points; ++i) {
+    const double l = label ? label->at(i) : 0.0;
+    if (f32) {
+      sink.add(i, detail::load_raw<float>(xyz[0].start + i * xyz[0].stride),
+               detail::load_raw<float>(xyz[1].start + i * xyz[1].stride),
+               detail::load_raw<float>(xyz[2].start + i * xyz[2].stride), l);
+    } else {
+      sink.add(i, xyz[0].at(i), xyz[1].at(i), xyz[2].at(i), l);
     }
-    return;
-  }
-  for (std::size_t i = 0; i < count; ++i) {
-    add_point(out, detail::load_scalar(starts[0] + i * strides[0], types[0]),
-              detail::load_scalar(starts[1] + i * strides[1], types[1]),
-              detail::load_scalar(starts[2] + i * strides[2], types[2]));
   }
 }
 
@@ -112,16 +151,10 @@ void read_binary(std::string_view data, const std::string& name, const PcdHeader
                         " bytes of points, found " + std::to_string(available) + ")");
   }
   const auto* base = reinterpret_cast<const unsigned char*>(data.data()) + h.data_offset;
-  const unsigned char* starts[3];
-  std::size_t strides[3];
-  Scalar types[3];
-  for (int a = 0; a < 3; ++a) {
-    const auto& field = h.fields[h.xyz[a]];
-    starts[a] = base + field.offset;
-    strides[a] = h.point_size;
-    types[a] = field.type;
-  }
-  extract_points(starts, strides, types, h.points, out);
+  const auto column = [&](std::size_t f) { return FieldColumn{base + h.fields[f].offset, h.point_size, h.fields[f].type}; };
+  const FieldColumn xyz[3] = {column(h.xyz[0]), column(h.xyz[1]), column(h.xyz[2])};
+  const FieldColumn label = h.label ? column(*h.label) : FieldColumn{};
+  extract_points(xyz, h.label ? &label : nullptr, h, out);
 }
 
 void read_compressed(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
@@ -159,16 +192,12 @@ void read_compressed(std::string_view data, const std::string& name, const PcdHe
   }
   // Per-field layout: all values of the first field, then all of the second, ...;
   // a field's block therefore starts at points * (its offset in an interleaved record).
-  const unsigned char* starts[3];
-  std::size_t strides[3];
-  Scalar types[3];
-  for (int a = 0; a < 3; ++a) {
-    const auto& field = h.fields[h.xyz[a]];
-    starts[a] = soa.get() + h.points * field.offset;
-    strides[a] = detail::scalar_size(field.type);
-    types[a] = field.type;
-  }
-  extract_points(starts, strides, types, h.points, out);
+  const auto column = [&](std::size_t f) {
+    return FieldColumn{soa.get() + h.points * h.fields[f].offset, detail::scalar_size(h.fields[f].type), h.fields[f].type};
+  };
+  const FieldColumn xyz[3] = {column(h.xyz[0]), column(h.xyz[1]), column(h.xyz[2])};
+  const FieldColumn label = h.label ? column(*h.label) : FieldColumn{};
+  extract_points(xyz, h.label ? &label : nullptr, h, out);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
 // Reads PCD point clouds (DATA ascii, binary or binary_compressed) into x/y/z points.
-// x, y and z may sit at any field position among other fields; non-finite points are dropped and counted.
+// x, y and z at any field position; non-finite points dropped and counted, pixels and labels kept.
 #pragma once
 
 #include <string>

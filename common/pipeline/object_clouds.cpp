@@ -5,6 +5,10 @@
 namespace cloudshape::pipeline {
 
 ObjectClouds object_clouds(const PointList& raw, const config::PreprocessConfig& cfg) {
+  return object_clouds(raw, GridLayout{}, cfg);
+}
+
+ObjectClouds object_clouds(const PointList& raw, const GridLayout& /*grid*/, const config::PreprocessConfig& cfg) {
   ObjectClouds out;
   out.scene = preprocess_cloud(raw, cfg);
   bool support_removed = false;

@@ -21,4 +21,7 @@ struct ObjectClouds {
 // objects instead, each at its own resolution.
 ObjectClouds object_clouds(const PointList& raw, const config::PreprocessConfig& cfg);
 
+// The same for a cloud with its sensor layout (organized when grid.organized()).
+ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& cfg);
+
 }  // namespace cloudshape::pipeline

@@ -28,12 +28,17 @@ class StageClock {
 
 RecognitionResult recognize_cloud(const PointList& points, const config::PipelineConfig& cfg,
                                   const std::string& source) {
+  return recognize_cloud(points, GridLayout{}, cfg, source);
+}
+
+RecognitionResult recognize_cloud(const PointList& points, const GridLayout& grid,
+                                  const config::PipelineConfig& cfg, const std::string& source) {
   RecognitionResult result;
   result.source = source;
   result.points_in = points.size();
   StageClock clock;
 
-  const ObjectClouds clouds = object_clouds(points, cfg.preprocess);
+  const ObjectClouds clouds = object_clouds(points, grid, cfg.preprocess);
   result.points_used = clouds.scene.points.size();
   result.resolution = clouds.scene.resolution;
   result.timings.preprocess_ms = clock.lap_ms();

@@ -15,4 +15,9 @@ namespace cloudshape::pipeline {
 RecognitionResult recognize_cloud(const PointList& points, const config::PipelineConfig& cfg,
                                   const std::string& source = {});
 
+// The same for an organized cloud: `grid` says where each point sat in the sensor's image
+// (GridLayout::organized()), which segmentation uses for pixel neighbours and depth edges.
+RecognitionResult recognize_cloud(const PointList& points, const GridLayout& grid,
+                                  const config::PipelineConfig& cfg, const std::string& source = {});
+
 }  // namespace cloudshape::pipeline

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,9 @@ struct ObjectResult {
   bool partial = false;
   KeypointCounts keypoints;
   std::string reason;  // why the shape is unknown (empty otherwise)
+  // Indices into the recognized input cloud of the points this object was made from (for
+  // scoring a segmentation against ground truth); not part of the JSON.
+  std::vector<std::uint32_t> point_indices;
 };
 
 struct StageTimings {

@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
     const std::string source = std::filesystem::path(path).filename().string();
     try {
       const cs::pipeline::RecognitionResult result =
-          cs::pipeline::recognize_cloud(cloud.points, cfg, source);
+          cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, source);
       std::cout << (pretty ? cs::report::result_to_json_pretty(result)
                            : cs::report::result_to_json_line(result))
                 << '\n'

@@ -223,6 +223,9 @@ private:
       }
       header_.xyz[axis] = i;
     }
+    for (std::size_t i = 0; i < header_.fields.size(); ++i) {
+      if (header_.fields[i].name == "label" && header_.fields[i].count == 1) header_.label = i;
+    }
   }
 
   [[noreturn]] void too_many_points(std::uint64_t declared) const {
@@ -247,6 +250,8 @@ private:
     }
     if (points > limits_.max_points) too_many_points(points);
     header_.points = static_cast<std::size_t>(points);
+    header_.height = raw_.width ? static_cast<std::size_t>(raw_.height.value_or(1)) : 1;
+    header_.width = header_.height > 0 ? header_.points / header_.height : 0;
   }
 
   void settle_data_bytes() {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,10 +26,13 @@ struct PcdField {
 struct PcdHeader {
   std::vector<PcdField> fields;
   std::size_t points = 0;       // WIDTH * HEIGHT, equal to POINTS, <= max_points
+  std::size_t width = 0;        // WIDTH, or POINTS when there is no WIDTH line
+  std::size_t height = 1;       // HEIGHT (1 when absent): > 1 for an organized cloud
   std::size_t point_size = 0;   // bytes of one binary point record
   std::size_t values_per_point = 0;  // sum of COUNT: tokens of one ascii data row
   std::size_t data_bytes = 0;   // points * point_size, <= max_bytes
   std::array<std::size_t, 3> xyz{};  // indices into fields
+  std::optional<std::size_t> label;  // index of a COUNT-1 field named "label", if any
   PcdData data = PcdData::ascii;
   std::size_t data_offset = 0;  // first byte after the DATA line
   std::size_t data_line = 0;    // number of the first line after the DATA line
