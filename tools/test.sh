@@ -3,8 +3,10 @@
 # Exit status 0 only if the build and every selected test pass. Idempotent.
 #
 #   tools/test.sh            # every test except those labelled "long" or "bench"
-#   tools/test.sh --long     # every test
-#   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R)
+#   tools/test.sh --long     # every test except the benchmarks (label "bench")
+#   tools/test.sh --bench    # only the benchmarks: wall-time bounds, best on an idle machine
+#   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R), still without
+#                            # "long" and "bench" unless --long / --bench is given too
 #   tools/test.sh --sanitize # ASan + UBSan build in build-sanitize/: unit tests, then process tests
 #
 # Environment: CLOUDSHAPE_BUILD_DIR (default build/, or build-sanitize/ with --sanitize),
@@ -16,14 +18,16 @@ CLOUDSHAPE_LOG_TAG=test.sh
 # shellcheck source-path=SCRIPTDIR source=lib/deps.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib/deps.sh"
 
-usage() { sed -n '2,12s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+usage() { sed -n '2,14s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 
 long=0
+bench=0
 sanitize=0
 ctest_filter=()
 while (($#)); do
   case "$1" in
     --long) long=1 ;;
+    --bench) bench=1 ;;
     --sanitize) sanitize=1 ;;
     -R) [[ $# -ge 2 ]] || cs_die "-R needs a regex"; ctest_filter=(-R "$2"); shift ;;
     -h|--help) usage; exit 0 ;;
@@ -36,7 +40,7 @@ done
 # they would double the CI's build for little more coverage of our own code).
 sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recognition_tests
                 io_pcd_reader_test io_pcd_errors_test io_ply_reader_test io_xyz_reader_test
-                io_cloud_reader_test io_cloud_writers_test io_mesh_reader_test io_robustness_test
+                io_cloud_reader_test io_cloud_writers_test io_labelled_pcd_writer_test io_mesh_reader_test io_robustness_test
                 io_real_data_test fuzz_regressions_test dds_ingest_sample_test dds_convert_test
                 dds_socket_buffers_test dds_participant_cli_test recognize_cli_test
                 synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test)
@@ -48,7 +52,7 @@ sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recogniti
 sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test mesh_view_cli_test cloudshape-synth)
 sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
 if ((sanitize)); then
-  ((long == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
+  ((long == 0 && bench == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
   [[ -n "${CLOUDSHAPE_BUILD_DIR_SET:-}" ]] || CLOUDSHAPE_BUILD_DIR="$CLOUDSHAPE_REPO/build-sanitize"
   CLOUDSHAPE_CMAKE_ARGS="${CLOUDSHAPE_CMAKE_ARGS:-} -DCLOUDSHAPE_SANITIZE=ON"
   # A finding stops the program (the build sets -fno-sanitize-recover) and fails its test.
@@ -85,11 +89,15 @@ cs_configure_and_build
 
 ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error
             -j "$CLOUDSHAPE_JOBS" --timeout "${CLOUDSHAPE_TEST_TIMEOUT:-600}" "${ctest_filter[@]}")
-if ((long)); then
-  cs_log "tests: all (ctest ${ctest_args[*]})"
+if ((bench)); then
+  ctest_args+=(-L bench)
+  cs_log "tests: the benchmarks, label 'bench' (ctest ${ctest_args[*]})"
+elif ((long)); then
+  ctest_args+=(-LE bench)
+  cs_log "tests: all but label 'bench' (ctest ${ctest_args[*]}); --bench runs those"
 else
   ctest_args+=(-LE 'long|bench')
-  cs_log "tests: all but labels 'long' and 'bench' (ctest ${ctest_args[*]}); --long runs everything"
+  cs_log "tests: all but labels 'long' and 'bench' (ctest ${ctest_args[*]}); --long, --bench run those"
 fi
 status=0
 ctest "${ctest_args[@]}" || status=$?

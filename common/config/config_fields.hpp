@@ -24,30 +24,32 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("smoothing", c.smoothing);
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
-  f("split_objects", c.split_objects);
-  f("object_gap", c.object_gap);
-  f("min_object_fraction", c.min_object_fraction);
+}
+
+template <class F>
+void visit_fields(SegmentConfig& c, F&& f) {
+  f("target_nodes", c.target_nodes);
+  f("depth_jump", c.depth_jump);
+  f("normal_radius", c.normal_radius);
+  f("normal_neighbours", c.normal_neighbours);
+  f("smooth_degrees", c.smooth_degrees);
+  f("edge_curvature", c.edge_curvature);
+  f("convex_tolerance_degrees", c.convex_tolerance_degrees);
+  f("convex_share", c.convex_share);
+  f("structure_max_planes", c.structure_max_planes);
+  f("structure_min_share", c.structure_min_share);
+  f("structure_band", c.structure_band);
+  f("structure_normal_degrees", c.structure_normal_degrees);
+  f("structure_reach", c.structure_reach);
+  f("structure_contact", c.structure_contact);
+  f("structure_margin_cells", c.structure_margin_cells);
+  f("structure_min_standing", c.structure_min_standing);
+  f("structure_hypotheses", c.structure_hypotheses);
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_max_share", c.fragment_max_share);
-  f("remove_support_plane", c.remove_support_plane);
-  f("support_band", c.support_band);
-  f("support_min_share", c.support_min_share);
-  f("support_margin", c.support_margin);
-  f("support_max_overlap", c.support_max_overlap);
-  f("support_one_sided", c.support_one_sided);
-  f("support_cell", c.support_cell);
-  f("support_iterations", c.support_iterations);
-  f("support_score_samples", c.support_score_samples);
-  f("remove_structure", c.remove_structure);
-  f("structure_min_extent", c.structure_min_extent);
-  f("structure_min_share", c.structure_min_share);
-  f("structure_max_planes", c.structure_max_planes);
-  f("structure_min_total", c.structure_min_total);
-  f("structure_normal_neighbours", c.structure_normal_neighbours);
-  f("structure_normal_degrees", c.structure_normal_degrees);
-  f("scene_object_max_extent", c.scene_object_max_extent);
-  f("scene_object_margin", c.scene_object_margin);
-  f("scene_object_min_points", c.scene_object_min_points);
+  f("min_object_nodes", c.min_object_nodes);
+  f("min_object_share", c.min_object_share);
+  f("seed", c.seed);
 }
 
 template <class F>
@@ -90,6 +92,10 @@ void visit_fields(ClassifyConfig& c, F&& f) {
   f("sphere_max_face_fraction", c.sphere_max_face_fraction);
   f("polyhedron_face_fraction", c.polyhedron_face_fraction);
   f("degenerate_thickness", c.degenerate_thickness);
+  f("outline_min_share", c.outline_min_share);
+  f("outline_circle_rms", c.outline_circle_rms);
+  f("outline_circle_harmonic", c.outline_circle_harmonic);
+  f("outline_rect_fill", c.outline_rect_fill);
 }
 
 template <class F>
@@ -103,6 +109,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("face_slab", c.face_slab);
   f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
+  f("cap_circle_agreement", c.cap_circle_agreement);
+  f("min_side_share", c.min_side_share);
   f("max_size_ratio", c.max_size_ratio);
   f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);
@@ -117,6 +125,7 @@ template <class F>
 void visit_sections(PipelineConfig& c, F&& f) {
   f("input", c.input);
   f("preprocess", c.preprocess);
+  f("segment", c.segment);
   f("planes", c.planes);
   f("keypoints", c.keypoints);
   f("classify", c.classify);

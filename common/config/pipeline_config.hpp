@@ -12,6 +12,7 @@ namespace cloudshape::config {
 struct PipelineConfig {
   InputConfig input;
   PreprocessConfig preprocess;
+  SegmentConfig segment;
   PlanesConfig planes;
   KeypointsConfig keypoints;
   ClassifyConfig classify;

@@ -33,48 +33,6 @@ struct PreprocessConfig {
   bool smoothing = false;
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
-  // Several objects in one cloud: components over cells of this many resolutions (objects
-  // more than ~3.5 cells apart are always split); smaller components are clutter.
-  bool split_objects = true;
-  double object_gap = 2.0;
-  double min_object_fraction = 0.02;
-  // A component that is a narrow strip (spread across its length below fragment_max_width
-  // resolutions) and smaller than fragment_max_share of the largest one is a fragment (edge
-  // shadow, mixed pixels, a sliver of back face), not an object.
-  double fragment_max_width = 2.0;
-  double fragment_max_share = 0.2;
-  // Real scenes: a dominant plane holding support_min_share of the points, within
-  // support_band resolutions, reaching beyond the rest (standing on one side of it) on three
-  // of four sides by support_margin of the rest's extent, and with at most support_max_overlap of
-  // the rest over where it was seen (objects hide the table they stand on), is a table or floor: removed first.
-  bool remove_support_plane = true;
-  double support_band = 2.0;
-  double support_min_share = 0.25;
-  double support_margin = 0.2;
-  double support_max_overlap = 0.9;
-  double support_one_sided = 0.8;        // share of the rest that must stand on one side of it
-  double support_cell = 3.0;             // occupancy cell of the plane (resolutions) for the overlap
-  std::int64_t support_iterations = 300; // RANSAC hypotheses for the support plane
-  std::int64_t support_score_samples = 1000;  // points that score each hypothesis
-  // Scenes (ground and walls around small objects, as a lidar sees them), experimental and
-  // off: when no support plane qualifies, planes spanning structure_min_extent of the scene
-  // diagonal and holding structure_min_share of its points, their points' own normals within
-  // structure_normal_degrees, are structure (at most structure_max_planes, found with the
-  // support RANSAC keys; together at least structure_min_total of the points). The components
-  // left over that span at most scene_object_max_extent of the diagonal, lie over a structural
-  // plane that reaches beyond them by scene_object_margin times their extent on three of four
-  // sides, hold scene_object_min_points raw points and are not flat are the objects; each is
-  // gridded again from its own raw points, so a small object gets a lone object's resolution.
-  bool remove_structure = false;
-  double structure_min_extent = 0.25;
-  double structure_min_share = 0.05;
-  std::int64_t structure_max_planes = 8;
-  double structure_min_total = 0.4;  // the structural planes together hold this share of the points
-  std::int64_t structure_normal_neighbours = 12;  // a structural plane's points have their own
-  double structure_normal_degrees = 30.0;         // normals (k-NN) within this angle of its normal
-  double scene_object_max_extent = 0.1;
-  double scene_object_margin = 1.0;
-  std::int64_t scene_object_min_points = 30;
 };
 
 struct PlanesConfig {
@@ -114,6 +72,37 @@ struct ClassifyConfig {
   double sphere_max_face_fraction = 0.3; // ... and at most this fraction of points on true faces
   double polyhedron_face_fraction = 0.85;  // faces covering this fraction: a polyhedron
   double degenerate_thickness = 0.5;     // spread (std dev, resolutions) below which the cloud is flat or a line
+  double outline_min_share = 0.1;        // faces holding this share of the points have their outline read (circle or rectangle)
+  double outline_circle_rms = 0.08;      // outline RMS off its circle (share of the radius) at most this: a circle
+  double outline_circle_harmonic = 0.04; // ... and no 3rd-8th angular harmonic of it above this share of the radius (a polygon's corners)
+  double outline_rect_fill = 0.89;       // hull filling this share of its enclosing rectangle: a rectangle (a disc fills pi/4)
+};
+
+// Scene segmentation (common/segment): the cloud as a graph of nodes (pixels of an organized
+// cloud, voxels otherwise), structure planes out, smooth patches joined across convex junctions.
+struct SegmentConfig {
+  std::int64_t target_nodes = 40000;       // the graph has about this many nodes (pixel stride or voxel edge chosen for it)
+  double depth_jump = 0.02;                // organized: neighbours whose ranges differ by more than this share of the range are not connected
+  std::int64_t normal_radius = 2;          // organized: half-width of a node's normal window, in nodes
+  std::int64_t normal_neighbours = 16;     // unorganized: nodes in a node's normal neighbourhood
+  double smooth_degrees = 10.0;            // neighbouring nodes with normals within this angle grow one smooth patch
+  double edge_curvature = 0.04;            // ... over surface nodes: a node curved more than this (surface variation) lies on an edge
+  double convex_tolerance_degrees = 15.0;  // a junction whose normals differ by less than this is convex whatever its sign
+  double convex_share = 0.5;               // adjacent patches join when at least this share of their junction is convex
+  std::int64_t structure_max_planes = 3;   // structure planes (table, floor, walls) removed at most
+  double structure_min_share = 0.1;        // a structure plane holds at least this share of the nodes ...
+  double structure_band = 3.0;             // ... within this many node spacings of it, normals within structure_normal_degrees
+  double structure_normal_degrees = 25.0;
+  double structure_reach = 4.0;            // ... and covers at least this many times the area of what stands on it (a solid's face covers about its own solid)
+  double structure_contact = 3.0;          // ... and what stands on it touches it (nodes within this many bands above it) ...
+  std::int64_t structure_margin_cells = 3; // ... inside it: structure_min_standing of those have plane this many cells (2 node spacings) beyond them on all four sides
+  std::int64_t structure_min_standing = 20;  // nodes that must stand on the viewer's side of a plane for it to be structure
+  std::int64_t structure_hypotheses = 200; // RANSAC hypotheses per structure plane
+  double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
+  double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes
+  std::int64_t min_object_nodes = 30;      // segments with fewer nodes are clutter
+  double min_object_share = 0.002;         // ... and so are those with less than this share of the nodes
+  std::int64_t seed = 7;                   // RANSAC seed: the same cloud always gives the same segments
 };
 
 struct SolveConfig {
@@ -125,6 +114,8 @@ struct SolveConfig {
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
+  double cap_circle_agreement = 0.1;     // the side's own circle is kept when centre and radius lie within this share of the cap circle's radius of it
+  double min_side_share = 0.05;          // a cylinder with a circular cap takes its radius from the side when this share of the points is on it
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "cloudshape.h"
+#include "geometry/point_cloud.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
@@ -16,6 +17,10 @@ namespace cloudshape::dds {
 // Points <-> flat x0 y0 z0 x1 ... (throws std::invalid_argument when not a multiple of 3).
 std::vector<double> to_xyz(const PointList& points);
 PointList from_xyz(const std::vector<double>& xyz);
+
+// A file's cloud as cloudshape-inject publishes it: xyz and, when grid.organized(), width,
+// height and pixel (0, 0 and empty otherwise). The header is the caller's.
+msg::RawCloud to_raw_cloud(const PointList& points, const GridLayout& grid);
 
 // Preprocessing output plus the raw cloud's point count.
 msg::CloudData to_msg(const pipeline::PreprocessedCloud& cloud, std::size_t points_in);

@@ -27,6 +27,17 @@ PointList from_xyz(const std::vector<double>& xyz) {
   return points;
 }
 
+msg::RawCloud to_raw_cloud(const PointList& points, const GridLayout& grid) {
+  msg::RawCloud m;
+  m.xyz(to_xyz(points));
+  if (grid.organized()) {
+    m.width(static_cast<std::uint32_t>(grid.width));
+    m.height(static_cast<std::uint32_t>(grid.height));
+    m.pixel(grid.pixel);
+  }
+  return m;
+}
+
 msg::CloudData to_msg(const pipeline::PreprocessedCloud& cloud, std::size_t points_in) {
   return to_msg(cloud.points, cloud, points_in);
 }

@@ -1,3 +1,5 @@
+// What cloudshape-ingest does with one raw-cloud sample: checks it, then splits and preprocesses it
+// exactly as recognize_cloud does, one filtered cloud per object.
 #include "dds/ingest_sample.hpp"
 
 #include <algorithm>
@@ -5,6 +7,7 @@
 #include <sstream>
 
 #include "dds/convert.hpp"
+#include "dds/raw_cloud_layout.hpp"
 #include "pipeline/object_clouds.hpp"
 
 namespace cloudshape::dds {
@@ -25,13 +28,22 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
     throw RawCloudError(std::to_string(count) + " points, more than input.max_points " +
                         std::to_string(limits.max_points));
   }
+  const GridLayout layout = raw_cloud_layout(cloud, count, limits);
+  const bool organized = layout.organized();
   RawCloudPoints out;
   out.points.reserve(count);
+  if (organized) {
+    out.grid.width = layout.width;
+    out.grid.height = layout.height;
+    out.grid.pixel.reserve(count);
+  }
   for (std::size_t i = 0; i < count; ++i) {
     const Point p(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-    // Another DDS program may send NaN: such points are dropped, as the file readers do.
+    // Another DDS program may send NaN: such points (and their pixels) are dropped, as the file
+    // readers drop them.
     if (p.allFinite()) {
       out.points.push_back(p);
+      if (organized) out.grid.pixel.push_back(layout.pixel[i]);
     } else {
       ++out.non_finite_dropped;
     }
@@ -53,7 +65,7 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
 std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
   const RawCloudPoints raw = raw_cloud_points(in, cfg.input);
   const auto start = std::chrono::steady_clock::now();
-  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, cfg.preprocess);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, raw.grid, cfg.preprocess, cfg.segment);
   const std::vector<pipeline::ObjectCloud>& objects = clouds.objects;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::vector<msg::FilteredCloud> out;

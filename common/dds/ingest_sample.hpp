@@ -1,31 +1,26 @@
 // What cloudshape-ingest does with one received raw cloud, without DDS: check the sample (x y z
-// triples, limits, finite points), then preprocess_cloud and split_objects as recognize_cloud does.
+// triples, limits, layout, finite points), then object_clouds with its grid as recognize_cloud does.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cloudshape.h"
 #include "config/pipeline_config.hpp"
+#include "dds/raw_cloud_error.hpp"
 #include "geometry/point_cloud.hpp"
 
 namespace cloudshape::dds {
 
-// A raw cloud that cannot be processed; what() says why (the header names the cloud).
-class RawCloudError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
-
 struct RawCloudPoints {
   PointList points;  // the finite points, in sample order
+  GridLayout grid;   // organized samples: the pixel of each of `points`; empty otherwise
   std::size_t non_finite_dropped = 0;
 };
 
 // Throws RawCloudError when xyz is not whole x y z triples, holds no point, more points than
-// limits.max_points or more coordinate bytes than limits.max_bytes, no finite point, or a
-// point beyond limits.max_coordinate.
+// limits.max_points or more coordinate bytes than limits.max_bytes, a bad layout
+// (raw_cloud_layout), no finite point, or a point beyond limits.max_coordinate.
 RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputConfig& limits);
 
 // One filtered cloud per object of `in`, object_index/object_count set (one with object_count 0

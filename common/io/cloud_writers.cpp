@@ -73,6 +73,57 @@ void append_compressed_block(std::string& out, const PointList& points) {
   out.append(packed.data(), packed_size);
 }
 
+// One row of x y z label per point, as float coordinates and an unsigned label.
+void append_labelled_text(std::string& out, const PointList& points, const std::vector<std::uint32_t>& labels) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      append_number(out, static_cast<float>(points[i][a]));
+      out += ' ';
+    }
+    append_number(out, labels[i]);
+    out += '\n';
+  }
+}
+
+void append_labelled_binary(std::string& out, const PointList& points, const std::vector<std::uint32_t>& labels) {
+  const std::size_t start = out.size();
+  out.resize(start + points.size() * 16);
+  char* cursor = out.data() + start;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const auto value = static_cast<float>(points[i][a]);
+      std::memcpy(cursor, &value, 4);
+      cursor += 4;
+    }
+    std::memcpy(cursor, &labels[i], 4);
+    cursor += 4;
+  }
+}
+
+void append_labelled_compressed(std::string& out, const PointList& points,
+                                const std::vector<std::uint32_t>& labels) {
+  const std::size_t n = points.size();
+  const std::size_t raw_size = n * 16;
+  if (raw_size > UINT_MAX / 2) throw std::runtime_error("too many points for a binary_compressed PCD");
+  // Field by field, as PCD stores compressed clouds: all x, all y, all z, then all labels.
+  std::vector<char> soa(raw_size);
+  for (std::size_t i = 0; i < n; ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const auto value = static_cast<float>(points[i][a]);
+      std::memcpy(soa.data() + (a * n + i) * 4, &value, 4);
+    }
+    std::memcpy(soa.data() + (3 * n + i) * 4, &labels[i], 4);
+  }
+  std::vector<char> packed(raw_size + raw_size / 16 + 64);
+  const auto in_size = static_cast<unsigned int>(raw_size);
+  const unsigned int packed_size =
+      raw_size == 0 ? 0 : lzf_compress(soa.data(), in_size, packed.data(), static_cast<unsigned int>(packed.size()));
+  if (raw_size != 0 && packed_size == 0) throw std::runtime_error("LZF compression failed");
+  const std::uint32_t sizes[2] = {packed_size, in_size};
+  out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
+  out.append(packed.data(), packed_size);
+}
+
 void write_file(const std::string& path, const std::string& bytes) {
   std::FILE* file = std::fopen(path.c_str(), "wb");
   if (!file) throw std::runtime_error(path + ": cannot open for writing: " + std::strerror(errno));
@@ -131,6 +182,46 @@ std::string encode_xyz(const PointList& points) {
   std::string out = points.empty() ? "# empty cloud\n" : "";
   append_text_rows<double>(out, points);
   return out;
+}
+
+std::string encode_labelled_pcd(const PointList& points, const std::vector<std::uint32_t>& labels,
+                                std::size_t width, std::size_t height, PcdEncoding encoding) {
+  if (points.size() != width * height || labels.size() != points.size())
+    throw std::invalid_argument("labelled PCD: " + std::to_string(points.size()) + " points and " +
+                                std::to_string(labels.size()) + " labels for a " + std::to_string(width) +
+                                " x " + std::to_string(height) + " grid");
+  const char* kind = encoding == PcdEncoding::ascii    ? "ascii"
+                     : encoding == PcdEncoding::binary ? "binary"
+                                                       : "binary_compressed";
+  std::string out =
+      "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS x y z label\nSIZE 4 4 4 4\n"
+      "TYPE F F F U\nCOUNT 1 1 1 1\nWIDTH " +
+      std::to_string(width) + "\nHEIGHT " + std::to_string(height) + "\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS " +
+      std::to_string(points.size()) + "\nDATA " + kind + "\n";
+  switch (encoding) {
+    case PcdEncoding::ascii:
+      append_labelled_text(out, points, labels);
+      break;
+    case PcdEncoding::binary:
+      append_labelled_binary(out, points, labels);
+      break;
+    case PcdEncoding::binary_compressed:
+      append_labelled_compressed(out, points, labels);
+      break;
+  }
+  return out;
+}
+
+void write_labelled_pcd(const std::string& path, const PointList& points,
+                        const std::vector<std::uint32_t>& labels, std::size_t width, std::size_t height,
+                        PcdEncoding encoding) {
+  std::string bytes;
+  try {
+    bytes = encode_labelled_pcd(points, labels, width, height, encoding);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+  write_file(path, bytes);
 }
 
 void write_pcd(const std::string& path, const PointList& points, PcdEncoding encoding, bool double_precision) {

@@ -62,6 +62,30 @@ std::vector<Shape> shapes_from_faces(const PlaneSegmentation& planes, double fac
   return out;
 }
 
+// Reads the outline of every face large enough to have one worth reading.
+void read_outlines(const PointList& cloud, const PlaneSegmentation& planes,
+                   const config::ClassifyConfig& cfg, Classification& out) {
+  std::optional<std::size_t> circle;
+  FaceOutline circle_outline;
+  bool rectangle = false;
+  const double min_points = cfg.outline_min_share * static_cast<double>(cloud.size());
+  for (std::size_t k = 0; k < planes.planes.size(); ++k) {
+    const DetectedPlane& p = planes.planes[k];
+    if (!p.is_face || static_cast<double>(p.inliers.size()) < min_points) continue;
+    const FaceOutline o = face_outline(cloud, p, cfg.outline_circle_rms, cfg.outline_circle_harmonic, cfg.outline_rect_fill);
+    if (o.kind == OutlineKind::rectangle) rectangle = true;
+    if (o.kind == OutlineKind::circle &&
+        (!circle || p.inliers.size() > planes.planes[*circle].inliers.size())) {
+      circle = k;
+      circle_outline = o;
+    }
+  }
+  if (circle && rectangle) return;
+  out.rectangular_face = rectangle;
+  out.cap_plane = circle;
+  out.cap_outline = circle_outline;
+}
+
 }  // namespace
 
 TypedKeypoint type_keypoint(const PointList& cloud, const Keypoint& keypoint,
@@ -145,10 +169,29 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
     out.sphere_test = sphere->rms < cfg.sphere_max_rms * sphere->radius &&
                       out.face_fraction <= cfg.sphere_max_face_fraction;
   }
+  read_outlines(cloud, planes, cfg, out);
+  // A sphere has no flat face.
+  if (out.cap_plane || out.rectangular_face) out.sphere_test = false;
   out.shape = out.sphere_test ? Shape::sphere : shape_from_keypoints(out.counts);
+  if (out.cap_plane) {
+    // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
+    out.shape = Shape::cylinder;
+    out.candidates = {Shape::cylinder, Shape::cone};
+    return out;
+  }
   add_unique(out.candidates, out.shape);
   for (Shape s : shapes_from_faces(planes, out.face_fraction, cfg)) add_unique(out.candidates, s);
   for (Shape s : kSolidShapes) add_unique(out.candidates, s);
+  if (out.rectangular_face) {
+    // No solid of revolution has a rectangular flat face.
+    out.candidates.erase(std::remove_if(out.candidates.begin(), out.candidates.end(),
+                                        [](Shape s) {
+                                          return s == Shape::cylinder || s == Shape::cone ||
+                                                 s == Shape::sphere;
+                                        }),
+                         out.candidates.end());
+    if (out.shape == Shape::cylinder || out.shape == Shape::cone) out.shape = out.candidates.front();
+  }
   return out;
 }
 

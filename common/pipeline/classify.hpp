@@ -2,10 +2,12 @@
 // covariance of its neighbourhood; the sphere test; the shape class from Table 3.1.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "config/stage_configs.hpp"
+#include "pipeline/face_outline.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
 #include "pipeline/result.hpp"
@@ -31,6 +33,11 @@ struct Classification {
   std::string reason;            // why there is no solid (degenerate cloud)
   double face_fraction = 0.0;    // share of the points lying on true flat faces
   bool sphere_test = false;
+  // Outlines of the large faces in their own planes. A circle is a lid or a bottom (only solids
+  // of revolution have one), a rectangle a polyhedron's face; when the faces disagree neither counts.
+  std::optional<std::size_t> cap_plane;  // index in planes.planes of the largest circular face
+  FaceOutline cap_outline;
+  bool rectangular_face = false;
 };
 
 // Types one key-point from its neighbourhood (thesis 3.2.2-3.2.3).

@@ -1,25 +1,33 @@
 #include "pipeline/object_clouds.hpp"
 
-#include "pipeline/split_objects.hpp"
+#include <numeric>
+
+#include "segment/segment_scene.hpp"
 
 namespace cloudshape::pipeline {
 
-ObjectClouds object_clouds(const PointList& raw, const config::PreprocessConfig& cfg) {
-  return object_clouds(raw, GridLayout{}, cfg);
-}
-
-ObjectClouds object_clouds(const PointList& raw, const GridLayout& /*grid*/, const config::PreprocessConfig& cfg) {
+ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& pre,
+                           const config::SegmentConfig& seg) {
   ObjectClouds out;
-  out.scene = preprocess_cloud(raw, cfg);
-  bool support_removed = false;
-  std::vector<PointList> parts = split_objects(out.scene.points, out.scene.resolution, cfg, nullptr, &support_removed);
-  if (cfg.split_objects && !support_removed) {
-    if (auto objects = scene_objects(raw, out.scene, cfg)) {
-      out.objects = std::move(*objects);
-      return out;
-    }
+  segment::SceneSegmentation scene = segment::segment_scene(raw, grid, seg);
+  if (scene.objects.empty() && !raw.empty()) {
+    scene.objects.emplace_back(raw.size());
+    std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);
   }
-  for (PointList& part : parts) out.objects.push_back({std::move(part), out.scene.resolution});
+  for (std::vector<std::uint32_t>& indices : scene.objects) {
+    PointList points;
+    points.reserve(indices.size());
+    for (std::uint32_t i : indices) points.push_back(raw[i]);
+    PreprocessedCloud p = preprocess_cloud(points, pre);
+    if (p.points.empty()) continue;
+    if (out.objects.empty()) {
+      out.scene.resolution = p.resolution;
+      out.scene.voxel_size = p.voxel_size;
+    }
+    out.scene.outliers_removed += p.outliers_removed;
+    out.scene.points.insert(out.scene.points.end(), p.points.begin(), p.points.end());
+    out.objects.push_back({std::move(p.points), p.resolution, std::move(indices)});
+  }
   return out;
 }
 

@@ -1,27 +1,35 @@
-// From a raw cloud to its objects: preprocessing, then either the support-plane split of
-// table-top scenes and lone objects or, among a scene's structure, its small objects.
+// From a raw cloud to its objects: scene segmentation (common/segment) on the raw points, then
+// each object preprocessed from its own raw points, at its own resolution.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
 #include "pipeline/preprocess.hpp"
-#include "pipeline/scene_objects.hpp"
 
 namespace cloudshape::pipeline {
 
-struct ObjectClouds {
-  PreprocessedCloud scene;           // the whole cloud, preprocessed
-  std::vector<ObjectCloud> objects;  // one cloud per object, largest first
+// One object's preprocessed points and the resolution (mean nearest-neighbour distance) they
+// were gridded at, and which raw points it was made from.
+struct ObjectCloud {
+  PointList points;
+  double resolution = 0.0;
+  std::vector<std::uint32_t> raw_indices;  // into the raw cloud
 };
 
-// preprocess_cloud, then split_objects; when no support plane was cut away and the cloud
-// is a scene of structural planes with small objects among them (scene_objects), those
-// objects instead, each at its own resolution.
-ObjectClouds object_clouds(const PointList& raw, const config::PreprocessConfig& cfg);
+struct ObjectClouds {
+  // What preprocessing kept, summed over the objects: points_used is their total, resolution
+  // and voxel_size those of the largest object, outliers_removed the total.
+  PreprocessedCloud scene;
+  std::vector<ObjectCloud> objects;  // largest first
+};
 
-// The same for a cloud with its sensor layout (organized when grid.organized()).
-ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& cfg);
+// segment_scene, then preprocess_cloud per object. A cloud in which segmentation finds no
+// object at all (a lone plane, too few points) is preprocessed whole as one object, so that the
+// recognizer can still say what it is (e.g. unknown: all points coplanar).
+ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& pre,
+                           const config::SegmentConfig& seg);
 
 }  // namespace cloudshape::pipeline

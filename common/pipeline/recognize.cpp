@@ -38,7 +38,7 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
   result.points_in = points.size();
   StageClock clock;
 
-  const ObjectClouds clouds = object_clouds(points, grid, cfg.preprocess);
+  const ObjectClouds clouds = object_clouds(points, grid, cfg.preprocess, cfg.segment);
   result.points_used = clouds.scene.points.size();
   result.resolution = clouds.scene.resolution;
   result.timings.preprocess_ms = clock.lap_ms();
@@ -51,6 +51,7 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
     result.timings.classify_ms += clock.lap_ms();
     result.objects.push_back(solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve));
+    result.objects.back().point_indices = o.raw_indices;
     result.timings.solve_ms += clock.lap_ms();
   }
   const StageTimings& t = result.timings;

@@ -1,8 +1,8 @@
 // Process-level: the five services receive raw-cloud samples that no file reader would make (NaN
 // points, a length that is not x y z triples, zero points, more points than input.max_points, a
-// sensor's object_count 0), clouds with no solid in them and a sample that does not deserialize;
-// every one ends in exactly one result line from cloudshape-echo that names the input (source,
-// and the cloud id) and the problem (reason).
+// sensor's object_count 0, a pixel outside its grid), clouds with no solid in them and a sample
+// that does not deserialize; every one ends in exactly one result line from cloudshape-echo that
+// names the input (source, and the cloud id) and the problem (reason).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -45,6 +45,8 @@ struct Sample {
   std::string source;
   std::vector<double> xyz;
   std::uint32_t object_count = 1;
+  std::uint32_t width = 0, height = 0;  // an organized sample's layout
+  std::vector<std::uint32_t> pixel = {};
 };
 
 std::vector<Sample> samples() {
@@ -74,6 +76,9 @@ std::vector<Sample> samples() {
   s.push_back({"repeated_point", repeated});
   s.push_back({"collinear", line});
   s.push_back({"coplanar", plane});
+  Sample beyond_grid{"pixel_beyond_grid", box, 1, 100, 50, {}};
+  for (std::uint32_t i = 0; i < 4000; ++i) beyond_grid.pixel.push_back(i + 1001);  // the last is 5000
+  s.push_back(beyond_grid);
   return s;
 }
 
@@ -110,6 +115,9 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
       m.header().source(s.source);
       m.header().object_count(s.object_count);
       m.xyz(s.xyz);
+      m.width(s.width);
+      m.height(s.height);
+      m.pixel(s.pixel);
       ASSERT_TRUE(writer.write(m));
     }
     EXPECT_TRUE(writer.wait_for_acknowledgments(120s));
@@ -148,6 +156,7 @@ TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
   EXPECT_THAT(reason_of("repeated_point"), HasSubstr("all points coincide"));
   EXPECT_THAT(reason_of("collinear"), HasSubstr("collinear"));
   EXPECT_THAT(reason_of("coplanar"), HasSubstr("coplanar"));
+  EXPECT_THAT(reason_of("pixel_beyond_grid"), HasSubstr("ingest: pixel[3999] = 5000 is outside the 100 x 50 grid"));
   // It names its cloud: id and source still read from the start of the broken sample.
   EXPECT_THAT(reason_of("undecodable"), HasSubstr("receive: the sample does not deserialize"));
   const std::map<std::string, std::uint64_t> ids = echoed_ids(read_text(p.log_path("echo")));

@@ -2,9 +2,17 @@
 // the services rely on it to compute exactly what the in-process chain computes.
 #include <gtest/gtest.h>
 
+#include <cstring>
+#include <filesystem>
+
 #include "../pipeline/stage_fixtures.hpp"
+#include "corrupt_sample.hpp"
+#include "dds/checked_type.hpp"
 #include "dds/convert.hpp"
+#include "dds/ingest_sample.hpp"
 #include "dds/result_joiner.hpp"
+#include "dds/topics.hpp"
+#include "io/cloud_reader.hpp"
 #include "pipeline/solve.hpp"
 
 namespace cloudshape::dds {
@@ -31,6 +39,65 @@ TEST(DdsConvert, CloudRoundTripIsExact) {
 
 TEST(DdsConvert, XyzRejectsAPartialPoint) {
   EXPECT_THROW(from_xyz({1.0, 2.0}), std::invalid_argument);
+}
+
+// What ingest hands to object_clouds for a cloud cloudshape-inject published: to_raw_cloud, CDR
+// as the service's reader decodes it, then ingest's sample checks.
+RawCloudPoints over_the_wire(const PointList& points, const GridLayout& grid) {
+  msg::RawCloud sent = to_raw_cloud(points, grid);
+  sent.header().source("frame.pcd");
+  const auto payload = cloudshape::testing::serialized<msg::RawCloudPubSubType>(sent);
+  msg::RawCloud received;
+  CheckedPubSubType<decltype(topics::raw_cloud)> type;
+  EXPECT_TRUE(type.deserialize(payload.get(), &received));
+  EXPECT_FALSE(received.header().error()) << received.header().error_text();
+  return raw_cloud_points(received, config::InputConfig{});
+}
+
+void expect_bit_identical(const RawCloudPoints& got, const PointList& points, const GridLayout& grid) {
+  ASSERT_EQ(got.points.size(), points.size());
+  EXPECT_EQ(got.non_finite_dropped, 0u);
+  EXPECT_EQ(std::memcmp(got.points.data(), points.data(), points.size() * sizeof(Point)), 0);
+  EXPECT_EQ(got.grid.organized(), grid.organized());
+  EXPECT_EQ(got.grid.width, grid.width);
+  EXPECT_EQ(got.grid.height, grid.height);
+  EXPECT_EQ(got.grid.pixel, grid.pixel);
+}
+
+TEST(DdsConvert, AnOrganizedCloudReachesIngestWithItsGrid) {
+  GridLayout grid{200, 150, {}};
+  const PointList& points = box().pre.points;
+  ASSERT_LT(2 * points.size(), grid.width * grid.height);
+  for (std::uint32_t i = 0; i < points.size(); ++i) grid.pixel.push_back(2 * i + 1);
+  const msg::RawCloud m = to_raw_cloud(points, grid);
+  EXPECT_EQ(m.width(), 200u);
+  EXPECT_EQ(m.height(), 150u);
+  expect_bit_identical(over_the_wire(points, grid), points, grid);
+}
+
+// Real Kinect frames (640 x 480, NaN pixels absent): the grid that reaches object_clouds in
+// ingest is the file's, pixel for pixel, as cloudshape-recognize passes it.
+TEST(DdsConvert, RealOrganizedFramesReachIngestBitIdentical) {
+  for (const char* name : {"learn0.pcd", "learn33.pcd"}) {
+    const std::filesystem::path path = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/mosd_learn" / name;
+    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
+    SCOPED_TRACE(name);
+    const io::CloudFile file = io::read_cloud(path.string());
+    ASSERT_TRUE(file.grid.organized());
+    EXPECT_EQ(file.grid.width, 640u);
+    EXPECT_EQ(file.grid.height, 480u);
+    ASSERT_LT(file.points.size(), 640u * 480u);  // holes: the pixels are not simply 0, 1, 2, ...
+    expect_bit_identical(over_the_wire(file.points, file.grid), file.points, file.grid);
+  }
+}
+
+TEST(DdsConvert, AnUnorganizedCloudTravelsWithoutALayout) {
+  const PointList& points = box().pre.points;
+  const msg::RawCloud m = to_raw_cloud(points, GridLayout{});
+  EXPECT_EQ(m.width(), 0u);
+  EXPECT_EQ(m.height(), 0u);
+  EXPECT_TRUE(m.pixel().empty());
+  expect_bit_identical(over_the_wire(points, GridLayout{}), points, GridLayout{});
 }
 
 TEST(DdsConvert, PlanesRoundTripIsExact) {

@@ -1,6 +1,6 @@
-// What ingest does with a received raw cloud (dds::ingest_raw_cloud): bad samples are refused with
-// a reason naming the problem, NaN points are dropped as the file readers drop them, and the rest
-// is exactly preprocess_cloud + split_objects.
+// What ingest does with a received raw cloud (dds::ingest_raw_cloud): bad samples and bad layouts are
+// refused with a reason naming the problem, NaN points (and their pixels) are dropped as the file
+// readers drop them, and the rest is exactly what recognize_cloud does.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "dds/convert.hpp"
 #include "dds/ingest_sample.hpp"
 #include "dds/topics.hpp"
-#include "pipeline/split_objects.hpp"
+#include "pipeline/object_clouds.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
 
@@ -51,6 +51,17 @@ std::string refusal(const msg::RawCloud& m, const config::PipelineConfig& cfg = 
   return {};
 }
 
+// The same for the sample checks alone (raw_cloud_points), without preprocessing: an accepted
+// grid of 2^32 pixels must not reach segmentation in a test.
+std::string check_refusal(const msg::RawCloud& m, const config::PipelineConfig& cfg = {}) {
+  try {
+    raw_cloud_points(m, cfg.input);
+  } catch (const RawCloudError& e) {
+    return e.what();
+  }
+  return {};
+}
+
 TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) {
   const PointList points = box_points(3000);
   std::vector<double> xyz = to_xyz(points);
@@ -67,15 +78,15 @@ TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) 
   EXPECT_EQ(kept.points, finite);
 
   const config::PipelineConfig cfg;
-  const pipeline::PreprocessedCloud pre = pipeline::preprocess_cloud(finite, cfg.preprocess);
-  const auto objects = pipeline::split_objects(pre.points, pre.resolution, cfg.preprocess);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(finite, GridLayout{}, cfg.preprocess, cfg.segment);
+  const auto& objects = clouds.objects;
   ASSERT_EQ(out.size(), objects.size());
   ASSERT_EQ(out.size(), 1u);
   EXPECT_FALSE(out[0].header().error());
   EXPECT_EQ(out[0].header().object_count(), 1u);
   EXPECT_EQ(out[0].cloud().points_in(), finite.size());
-  EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0]);
-  EXPECT_EQ(out[0].cloud().resolution(), pre.resolution);
+  EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0].points);
+  EXPECT_EQ(out[0].cloud().resolution(), objects[0].resolution);
 }
 
 TEST(IngestSample, AllNonFiniteIsRefused) {
@@ -117,6 +128,103 @@ TEST(IngestSample, ACoordinateBeyondTheLimitIsRefused) {
   config::PipelineConfig cfg;
   cfg.input.max_coordinate = 3e30;
   EXPECT_EQ(refusal(raw(xyz), cfg), "");
+}
+
+// `n` box points at pixels 0, 3, 6, ... of a 100 x 60 image.
+msg::RawCloud organized_raw(std::size_t n) {
+  msg::RawCloud m = raw(to_xyz(box_points(n)));
+  m.width(100);
+  m.height(60);
+  for (std::uint32_t i = 0; i < n; ++i) m.pixel().push_back(3 * i);
+  return m;
+}
+
+TEST(IngestSample, AnOrganizedCloudReachesObjectCloudsWithItsGridAndNaNPixelsDropped) {
+  msg::RawCloud m = organized_raw(2000);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  m.xyz()[3 * 4] = nan;
+  m.xyz()[3 * 1999 + 2] = nan;
+  const RawCloudPoints kept = raw_cloud_points(m, config::InputConfig{});
+  ASSERT_EQ(kept.points.size(), 1998u);
+  EXPECT_EQ(kept.grid.width, 100u);
+  EXPECT_EQ(kept.grid.height, 60u);
+  ASSERT_EQ(kept.grid.pixel.size(), 1998u);
+  EXPECT_EQ(kept.grid.pixel[3], 9u);
+  EXPECT_EQ(kept.grid.pixel[4], 15u);  // point 4 (pixel 12) was NaN
+  EXPECT_EQ(kept.grid.pixel.back(), 3u * 1998);
+
+  const config::PipelineConfig cfg;
+  const pipeline::ObjectClouds expected = pipeline::object_clouds(kept.points, kept.grid, cfg.preprocess, cfg.segment);
+  const auto out = ingest_raw_cloud(m, cfg);
+  ASSERT_EQ(out.size(), expected.objects.size());
+  for (std::size_t i = 0; i < out.size(); ++i) EXPECT_EQ(from_xyz(out[i].cloud().xyz()), expected.objects[i].points);
+}
+
+TEST(IngestSample, NoPixelsAndHeightZeroOrOneIsUnorganized) {
+  for (std::uint32_t height : {0u, 1u}) {
+    msg::RawCloud m = raw(to_xyz(box_points(500)));
+    m.width(500);  // a sender may say width = count for a flat cloud, as PCD files do
+    m.height(height);
+    const RawCloudPoints kept = raw_cloud_points(m, config::InputConfig{});
+    EXPECT_FALSE(kept.grid.organized()) << height;
+    EXPECT_TRUE(kept.grid.pixel.empty()) << height;
+  }
+}
+
+TEST(IngestSample, PixelCountOtherThanPointCountIsRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  m.pixel().pop_back();
+  EXPECT_THAT(refusal(m), HasSubstr("pixel holds 999 indices for 1000 points"));  // what the service calls
+  m.pixel().clear();  // height 60 promises pixels
+  EXPECT_THAT(check_refusal(m), HasSubstr("pixel holds 0 indices for 1000 points"));
+}
+
+TEST(IngestSample, PixelsWithoutAnOrganizedHeightAreRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  m.height(1);
+  EXPECT_THAT(check_refusal(m), HasSubstr("pixel holds 1000 indices but height is 1"));
+}
+
+TEST(IngestSample, AnOrganizedCloudOfWidthZeroIsRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  m.width(0);
+  EXPECT_THAT(check_refusal(m), HasSubstr("organized cloud of height 60 with width 0"));
+}
+
+TEST(IngestSample, APixelOutsideTheGridIsRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  m.pixel().back() = 6000;  // the first index past 100 x 60
+  EXPECT_THAT(check_refusal(m), HasSubstr("pixel[999] = 6000 is outside the 100 x 60 grid"));
+  m.pixel().back() = 5999;
+  EXPECT_EQ(check_refusal(m), "");
+}
+
+TEST(IngestSample, PixelsNotStrictlyIncreasingAreRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  m.pixel()[7] = m.pixel()[6];
+  EXPECT_THAT(check_refusal(m), HasSubstr("pixel[7] = 18 does not follow pixel[6] = 18 (pixels must be strictly increasing)"));
+  m.pixel()[7] = 2;
+  EXPECT_THAT(check_refusal(m), HasSubstr("pixel[7] = 2 does not follow pixel[6] = 18"));
+}
+
+TEST(IngestSample, AGridBeyondThirtyTwoBitPixelsOrTheInputLimitIsRefused) {
+  msg::RawCloud m = organized_raw(1000);
+  config::PipelineConfig unlimited;
+  unlimited.input.max_points = std::numeric_limits<std::int64_t>::max();
+  // 32-bit pixel indices cannot address this grid: it is refused before any index is trusted.
+  m.width(UINT32_MAX);
+  m.height(UINT32_MAX);
+  EXPECT_THAT(check_refusal(m, unlimited),
+              HasSubstr("grid 4294967295 x 4294967295 = 18446744065119617025 pixels, more than 32-bit pixel indices address"));
+  m.width(65536);
+  m.height(65537);
+  EXPECT_THAT(check_refusal(m, unlimited), HasSubstr("more than 32-bit pixel indices address"));
+  m.height(65536);  // exactly 2^32 pixels: addressable
+  EXPECT_EQ(check_refusal(m, unlimited), "");
+  // An absurd image for the configured input: refused like an absurd point count.
+  m.width(3000);
+  m.height(2000);
+  EXPECT_THAT(check_refusal(m), HasSubstr("grid 3000 x 2000 = 6000000 pixels, more than input.max_points 5000000"));
 }
 
 TEST(IngestSample, ARawCloudsOwnObjectCountIsIgnored) {

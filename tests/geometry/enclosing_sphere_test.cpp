@@ -1,6 +1,10 @@
-// Minimal enclosing sphere against analytic answers and a brute-force search.
+// Minimal enclosing sphere against analytic answers and an independent brute-force search.
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+#include <cmath>
+#include <limits>
+#include <optional>
 #include <random>
 
 #include "geometry/enclosing_sphere.hpp"
@@ -14,21 +18,50 @@ bool encloses(const Sphere& s, const PointList& pts, double tol) {
   return true;
 }
 
-// Smallest sphere among those spanned by 2, 3 or 4 of the points that hold them all:
-// the minimal enclosing sphere is always one of them.
-double brute_force_radius(const PointList& pts) {
-  double best = std::numeric_limits<double>::infinity();
-  const std::size_t n = pts.size();
-  auto consider = [&](const PointList& support) {
-    const Sphere s = minimal_enclosing_sphere(support);
-    if (s.radius < best && encloses(s, pts, 1e-9)) best = s.radius;
+// The oracle, independent of the code under test: the minimal enclosing sphere is fixed by
+// 2, 3 or 4 points on its surface (the diametral sphere of a pair, the circumcircle of a
+// triangle in its own plane, the circumsphere of a tetrahedron), so the smallest of those
+// spheres that holds every point is it. Degenerate triples and quadruples are skipped:
+// their points are held by a sphere of another kind.
+struct Ball {
+  Point center;
+  double radius;
+};
+
+std::optional<Ball> circumcircle(const Point& a, const Point& b, const Point& c) {
+  const Eigen::Vector3d u = b - a, v = c - a, n = u.cross(v);
+  if (n.squaredNorm() < 1e-18) return std::nullopt;
+  const Eigen::Vector3d to_center =
+      (u.squaredNorm() * v.cross(n) + v.squaredNorm() * n.cross(u)) / (2.0 * n.squaredNorm());
+  return Ball{a + to_center, to_center.norm()};
+}
+
+std::optional<Ball> circumsphere(const Point& a, const Point& b, const Point& c, const Point& d) {
+  Eigen::Matrix3d m;
+  m << (b - a).transpose(), (c - a).transpose(), (d - a).transpose();
+  if (std::abs(m.determinant()) < 1e-12) return std::nullopt;
+  const Eigen::Vector3d rhs(0.5 * (b - a).squaredNorm(), 0.5 * (c - a).squaredNorm(),
+                            0.5 * (d - a).squaredNorm());
+  const Eigen::Vector3d to_center = m.fullPivLu().solve(rhs);
+  return Ball{a + to_center, to_center.norm()};
+}
+
+Ball brute_force(const PointList& pts) {
+  Ball best{Point::Zero(), std::numeric_limits<double>::infinity()};
+  auto consider = [&](const std::optional<Ball>& b) {
+    if (!b || b->radius >= best.radius) return;
+    for (const auto& p : pts)
+      if ((p - b->center).norm() > b->radius + 1e-9) return;
+    best = *b;
   };
+  const std::size_t n = pts.size();
   for (std::size_t a = 0; a < n; ++a)
     for (std::size_t b = a + 1; b < n; ++b) {
-      consider({pts[a], pts[b]});
+      consider(Ball{0.5 * (pts[a] + pts[b]), 0.5 * (pts[a] - pts[b]).norm()});
       for (std::size_t c = b + 1; c < n; ++c) {
-        consider({pts[a], pts[b], pts[c]});
-        for (std::size_t d = c + 1; d < n; ++d) consider({pts[a], pts[b], pts[c], pts[d]});
+        consider(circumcircle(pts[a], pts[b], pts[c]));
+        for (std::size_t d = c + 1; d < n; ++d)
+          consider(circumsphere(pts[a], pts[b], pts[c], pts[d]));
       }
     }
   return best;
@@ -82,7 +115,9 @@ TEST(MinimalEnclosingSphere, MatchesBruteForceOnRandomSets) {
     for (int i = 0; i < 10; ++i) pts.emplace_back(u(rng), 0.5 * u(rng), 2.0 * u(rng));
     const Sphere s = minimal_enclosing_sphere(pts);
     EXPECT_TRUE(encloses(s, pts, 1e-9)) << "trial " << trial;
-    EXPECT_NEAR(s.radius, brute_force_radius(pts), 1e-9) << "trial " << trial;
+    const Ball oracle = brute_force(pts);
+    EXPECT_NEAR(s.radius, oracle.radius, 1e-9) << "trial " << trial;
+    EXPECT_LT((s.center - oracle.center).norm(), 1e-6) << "trial " << trial;
   }
 }
 

@@ -105,8 +105,4 @@ void append_le(std::string& out, T value) {
   out.append(bytes, sizeof(T));
 }
 
-inline std::string shared_data(const std::string& relative) {
-  return std::string(CLOUDSHAPE_SHARED_DATA_DIR) + "/" + relative;
-}
-
 }  // namespace cloudshape::io::test

@@ -1,5 +1,6 @@
 // Reading speed on a 2-million-point cloud: binary PCD must stay well under a second and the
-// text formats within a few. Generous bounds for a shared machine; skipped in sanitizer and debug builds.
+// text formats within a few. A benchmark (label bench, `tools/test.sh --bench`), not in the
+// default run; skipped in sanitizer and debug builds.
 #include <chrono>
 
 #include "io/cloud_writers.hpp"

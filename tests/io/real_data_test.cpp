@@ -1,5 +1,5 @@
 // The real files in shared/data/real (see SOURCES.md there), with the counts documented for them.
-// Skipped when the shared data folder is not present.
+// Without the shared data folder: a failure under CI=true, a skip elsewhere (shared_data.hpp).
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
@@ -7,22 +7,17 @@
 #include "io/cloud_reader.hpp"
 #include "io/mesh_reader.hpp"
 #include "io_test_support.hpp"
+#include "shared_data.hpp"
 
 namespace cloudshape::io {
 namespace {
 
-std::string real(const std::string& relative) {
-  const std::string path = test::shared_data("real/" + relative);
-  if (!std::filesystem::exists(path)) return {};
-  return path;
-}
-
-#define REAL_FILE_OR_SKIP(var, relative)                        \
-  const std::string var = real(relative);                       \
-  if ((var).empty()) GTEST_SKIP() << "no shared data: " << (relative)
+#define REQUIRE_REAL_FILE(var, relative)                                                      \
+  const std::string var = ::cloudshape::testing::shared_data_path("real/" relative).string(); \
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(var)
 
 TEST(IoRealData, MosdLearn0IsOrganisedWithNanPoints) {
-  REAL_FILE_OR_SKIP(path, "pcl/mOSD_learn0_boxes.pcd");
+  REQUIRE_REAL_FILE(path, "pcl/mOSD_learn0_boxes.pcd");
   const CloudFile cloud = read_cloud(path);
   EXPECT_EQ(cloud.format, "pcd-binary_compressed");
   EXPECT_EQ(cloud.points.size(), 182292u);
@@ -30,14 +25,14 @@ TEST(IoRealData, MosdLearn0IsOrganisedWithNanPoints) {
 }
 
 TEST(IoRealData, MosdLearn33ReadsEveryPoint) {
-  REAL_FILE_OR_SKIP(path, "pcl/mOSD_learn33_cylinders.pcd");
+  REQUIRE_REAL_FILE(path, "pcl/mOSD_learn33_cylinders.pcd");
   const CloudFile cloud = read_cloud(path);
   EXPECT_EQ(cloud.points.size() + cloud.non_finite_dropped, 307200u);
   EXPECT_GT(cloud.points.size(), 100000u);
 }
 
 TEST(IoRealData, MilkCarton) {
-  REAL_FILE_OR_SKIP(path, "pcl/milk.pcd");
+  REQUIRE_REAL_FILE(path, "pcl/milk.pcd");
   const CloudFile cloud = read_cloud(path);
   EXPECT_EQ(cloud.format, "pcd-binary_compressed");
   EXPECT_EQ(cloud.points.size(), 13704u);
@@ -50,7 +45,7 @@ TEST(IoRealData, MilkCarton) {
 }
 
 TEST(IoRealData, TennisBallPlyAsCloud) {
-  REAL_FILE_OR_SKIP(path, "ycb/056_tennis_ball_google16k_nontextured.ply");
+  REQUIRE_REAL_FILE(path, "ycb/056_tennis_ball_google16k_nontextured.ply");
   const CloudFile cloud = read_cloud(path);
   EXPECT_EQ(cloud.format, "ply-ascii");
   EXPECT_EQ(cloud.points.size(), 8194u);
@@ -59,14 +54,14 @@ TEST(IoRealData, TennisBallPlyAsCloud) {
 }
 
 TEST(IoRealData, TennisBallPlyAsMesh) {
-  REAL_FILE_OR_SKIP(path, "ycb/056_tennis_ball_google16k_nontextured.ply");
+  REQUIRE_REAL_FILE(path, "ycb/056_tennis_ball_google16k_nontextured.ply");
   const Mesh mesh = read_mesh(path);
   EXPECT_EQ(mesh.vertices.size(), 8194u);
   EXPECT_EQ(mesh.triangles.size(), 16384u);
 }
 
 TEST(IoRealData, SphereCalibLidarScan) {
-  REAL_FILE_OR_SKIP(path, "spherecalib/example3_L1_S1_lidar_sphere.xyz");
+  REQUIRE_REAL_FILE(path, "spherecalib/example3_L1_S1_lidar_sphere.xyz");
   const CloudFile cloud = read_cloud(path);
   EXPECT_EQ(cloud.format, "xyz");
   EXPECT_EQ(cloud.points.size(), 19232u);
@@ -76,8 +71,7 @@ TEST(IoRealData, SphereCalibLidarScan) {
 // Most YCB google_16k meshes have 8194 vertices; the two soup/coffee cans have fewer, so the
 // expected vertex count is taken from the file's own "v" lines.
 TEST(IoRealData, EveryYcbObjHasItsVerticesAnd16384Triangles) {
-  const std::string folder = real("ycb");
-  if (folder.empty()) GTEST_SKIP() << "no shared data";
+  REQUIRE_REAL_FILE(folder, "ycb");
   int meshes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     if (entry.path().extension() != ".obj") continue;
@@ -93,12 +87,12 @@ TEST(IoRealData, EveryYcbObjHasItsVerticesAnd16384Triangles) {
 }
 
 TEST(IoRealData, CrackerBoxHas8194Vertices) {
-  REAL_FILE_OR_SKIP(path, "ycb/003_cracker_box_google16k.obj");
+  REQUIRE_REAL_FILE(path, "ycb/003_cracker_box_google16k.obj");
   EXPECT_EQ(read_mesh(path).vertices.size(), 8194u);
 }
 
 TEST(IoRealData, RavensCube) {
-  REAL_FILE_OR_SKIP(path, "ravens/kitting_03_cube.obj");
+  REQUIRE_REAL_FILE(path, "ravens/kitting_03_cube.obj");
   const Mesh mesh = read_mesh(path);
   EXPECT_EQ(mesh.vertices.size(), 8u);
   EXPECT_EQ(mesh.triangles.size(), 12u);
@@ -108,7 +102,7 @@ TEST(IoRealData, RavensCube) {
 }
 
 TEST(IoRealData, RavensPentagonalPrism) {
-  REAL_FILE_OR_SKIP(path, "ravens/kitting_07_pentagonal_prism.obj");
+  REQUIRE_REAL_FILE(path, "ravens/kitting_07_pentagonal_prism.obj");
   const Mesh mesh = read_mesh(path);
   EXPECT_EQ(mesh.vertices.size(), 10u);
   EXPECT_EQ(mesh.triangles.size(), 16u);

@@ -66,7 +66,9 @@ TEST(Classify, SphereTestAndCornerCountsOnSolids) {
   EXPECT_EQ(sphere.classification.shape, Shape::sphere);
   const auto box = stage(synth::ShapeKind::box, {3.0, 2.0, 1.0});
   EXPECT_FALSE(box.classification.sphere_test);
-  EXPECT_EQ(box.classification.candidates.front(), box.classification.shape);
+  EXPECT_EQ(box.classification.shape, Shape::box);
+  ASSERT_FALSE(box.classification.candidates.empty());
+  EXPECT_EQ(box.classification.candidates.front(), Shape::box);
   EXPECT_GT(box.classification.face_fraction, 0.95);
   const auto cylinder = stage(synth::ShapeKind::cylinder, {1.0, 3.0});
   EXPECT_EQ(cylinder.classification.counts.corner, 0);

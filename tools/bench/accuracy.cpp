@@ -118,7 +118,8 @@ int run_accuracy(const AccuracyOptions& options, const config::PipelineConfig& c
     settings["count"] = options.suite.count;
     settings["seed"] = options.suite.seed;
     settings["solid_size"] = options.suite.solid_size;
-    settings["points"] = {2000, 200000};
+    settings["points"] = {std::min<std::size_t>(2000, options.suite.max_points),
+                          options.suite.max_points};
     settings["config"] = options.config_label;
     std::cout << accuracy_json(reports, settings).dump(2) << std::endl;
   } else {

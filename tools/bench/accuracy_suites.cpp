@@ -43,8 +43,9 @@ double log_uniform(std::mt19937_64& rng, double lo, double hi) {
   return std::exp(u(rng));
 }
 
-std::size_t random_point_count(std::mt19937_64& rng) {
-  return static_cast<std::size_t>(std::lround(log_uniform(rng, kMinPoints, kMaxPoints)));
+std::size_t random_point_count(std::mt19937_64& rng, std::size_t cap) {
+  const auto drawn = static_cast<std::size_t>(std::lround(log_uniform(rng, kMinPoints, kMaxPoints)));
+  return std::min(drawn, cap);
 }
 
 // Box axes whose dimension ties another within 3% are undefined up to a swap: not compared.
@@ -85,7 +86,7 @@ Drawn draw_solid(std::size_t shape, std::size_t i, const SuiteOptions& o) {
   std::mt19937_64 rng(stream(o.seed, 1, shape, i));
   Drawn d;
   d.spec = synth::random_solid(synth::all_shape_kinds()[shape], rng, o.solid_size);
-  d.points = random_point_count(rng);
+  d.points = random_point_count(rng, o.max_points);
   return d;
 }
 
@@ -189,7 +190,8 @@ double bounding_radius(const SolidSpec& spec, std::mt19937_64& rng) {
 
 // 2-4 solids, the first of the row's shape, the others of any shape; centres are re-drawn
 // until every two bounding spheres are more than one solid size apart.
-TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double size) {
+TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double size,
+                             std::size_t max_points) {
   std::mt19937_64 rng(cloud_seed);
   const auto& kinds = synth::all_shape_kinds();
   const int n = std::uniform_int_distribution<int>(2, 4)(rng);
@@ -213,7 +215,7 @@ TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double
     radii.push_back(radius);
   }
   synth::CloudOptions options;
-  options.points = random_point_count(rng);
+  options.points = random_point_count(rng, max_points);
   TestCloud cloud;
   cloud.points = synth::make_synthetic_cloud(solids, options, rng()).points;
   for (const auto& s : solids) cloud.truths.push_back(truth_of(s));
@@ -271,7 +273,7 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
 
   TestCloud cloud;
   if (condition == "multi") {
-    cloud = multi_object_cloud(shape, cloud_seed, o.solid_size);
+    cloud = multi_object_cloud(shape, cloud_seed, o.solid_size, o.max_points);
   } else {
     const Drawn d = draw_solid(shape, i, o);
     if (condition == "single_view" || condition == "table_view") {

@@ -15,6 +15,9 @@ struct SuiteOptions {
   int count = 30;           // clouds per shape (synthetic conditions)
   std::uint64_t seed = 42;  // every cloud's randomness derives from it
   double solid_size = 100.0;
+  // Synthetic clouds are drawn with 2k-200k points (log-uniform); a cloud drawn above this cap
+  // gets the cap instead, so a smaller cap leaves every solid, pose and smaller cloud as it was.
+  std::size_t max_points = 200000;
   std::string shared_data_dir;  // holds real/ (the YCB and ravens meshes)
 };
 

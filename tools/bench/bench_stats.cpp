@@ -1,3 +1,5 @@
+// Order statistics for the bench: percentiles with linear interpolation, and a summary.
+// Shared by the timing table and the accuracy report.
 #include "bench_stats.hpp"
 
 #include <algorithm>

@@ -2,8 +2,8 @@
 //
 //   cloudshape-bench [--sizes 10000,100000,1000000] [--shapes box,cone,...] [--reps R]
 //                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--json]
-//   cloudshape-bench --accuracy [--count N] [--conditions clean,noise,...] [--seed S]
-//                    [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
+//   cloudshape-bench --accuracy [--count N] [--max-points P] [--conditions clean,noise,...]
+//                    [--seed S] [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
 //
 // For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
@@ -124,6 +124,7 @@ int main(int argc, char** argv) {
   bool json = false;
   bool accuracy = false;
   int count = 30;
+  std::size_t max_points = 200000;
   std::string conditions_arg;
   bool per_cloud = false;
   std::string save_dir;
@@ -144,6 +145,9 @@ int main(int argc, char** argv) {
                "measure recognition accuracy instead of timings (clean, noise, outliers, "
                "density, single_view, table_view, multi, real)");
   app.add_option("--count", count, "--accuracy: clouds per shape per condition")
+      ->capture_default_str();
+  app.add_option("--max-points", max_points,
+                 "--accuracy: cap on a synthetic cloud's points (clouds drawn above it get it)")
       ->capture_default_str();
   app.add_option("--conditions", conditions_arg,
                  "--accuracy: comma-separated subset of "
@@ -198,13 +202,14 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (accuracy) {
-    if (count <= 0) {
-      std::fprintf(stderr, "cloudshape-bench: --count must be positive\n");
+    if (count <= 0 || max_points == 0) {
+      std::fprintf(stderr, "cloudshape-bench: --count and --max-points must be positive\n");
       return 2;
     }
     cs::bench::AccuracyOptions options;
     options.suite.count = count;
     options.suite.seed = seed;
+    options.suite.max_points = max_points;
     options.suite.shared_data_dir = CLOUDSHAPE_SHARED_DATA_DIR;
     options.conditions = split(conditions_arg);
     options.json = json;

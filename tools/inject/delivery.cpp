@@ -1,3 +1,5 @@
+// cloudshape-inject's delivery: a file's cloud (points and, organized, their pixels) published on the
+// raw-cloud topic, and sent again while its result is overdue.
 #include "delivery.hpp"
 
 #include <chrono>
@@ -10,7 +12,7 @@
 
 namespace cloudshape::inject {
 
-PointList read_points(const std::string& path) {
+FileCloud read_file_cloud(const std::string& path) {
   io::CloudFile cloud;
   try {
     cloud = io::read_cloud(path);
@@ -18,7 +20,7 @@ PointList read_points(const std::string& path) {
     throw std::runtime_error(e.problem().empty() ? std::string(e.what()) : e.problem());
   }
   if (cloud.points.empty()) throw std::runtime_error("no usable points");
-  return cloud.points;
+  return FileCloud{std::move(cloud.points), std::move(cloud.grid)};
 }
 
 Delivery::Delivery(dds::Participant& participant, RawWriter& writer, const DeliverySettings& settings,
@@ -34,7 +36,7 @@ Delivery::Delivery(dds::Participant& participant, RawWriter& writer, const Deliv
   }
 }
 
-bool Delivery::send(const PendingCloud& cloud, const PointList& points) {
+bool Delivery::send(const PendingCloud& cloud, const FileCloud& file) {
   if (tracked()) {
     while (pending_.size() >= settings_.max_pending && !stop_) {
       if (!resend_overdue()) return false;
@@ -43,7 +45,7 @@ bool Delivery::send(const PendingCloud& cloud, const PointList& points) {
     if (!resend_overdue()) return false;
     pending_.sent(cloud);  // before the write: its result may come back at once
   }
-  return publish(cloud, points);
+  return publish(cloud, file);
 }
 
 std::vector<std::uint64_t> Delivery::finish() {
@@ -61,9 +63,9 @@ std::vector<std::uint64_t> Delivery::finish() {
 bool Delivery::resend_overdue() {
   const auto after = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(settings_.resend_after_s));
   while (const auto c = pending_.resend_overdue(Clock::now(), after)) {
-    PointList points;
+    FileCloud file;
     try {
-      points = read_points(c->path);
+      file = read_file_cloud(c->path);
     } catch (const std::exception& e) {
       say_(c->path + ": cannot send cloud " + std::to_string(c->id) + " again: " + e.what());
       pending_.complete(c->id, c->source);
@@ -72,24 +74,23 @@ bool Delivery::resend_overdue() {
     }
     say_("no result for cloud " + std::to_string(c->id) + " (" + c->source + ") after " +
          std::to_string(settings_.resend_after_s) + " s: sending it again (attempt " + std::to_string(c->attempts) + ")");
-    if (!publish(*c, points)) return false;
+    if (!publish(*c, file)) return false;
   }
   return true;
 }
 
 // While ingest is away (killed, restarting) a sample would go nowhere: wait for it first.
-bool Delivery::publish(const PendingCloud& c, const PointList& points) {
+bool Delivery::publish(const PendingCloud& c, const FileCloud& file) {
   while (writer_.matched_readers() < settings_.subscribers) {
     if (stop_) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  msg::RawCloud m;
+  msg::RawCloud m = dds::to_raw_cloud(file.points, file.grid);
   m.header().cloud_id(c.id);
   m.header().source(c.source);
   m.header().object_index(0);
   m.header().object_count(1);
   m.header().inject_time_ns(c.inject_time_ns);
-  m.xyz(dds::to_xyz(points));
   return writer_.write(m, &stop_);
 }
 

@@ -19,8 +19,14 @@ namespace cloudshape::inject {
 
 using RawWriter = dds::Writer<decltype(dds::topics::raw_cloud)>;
 
-// The file's points; throws with the problem when it cannot be read or holds none.
-PointList read_points(const std::string& path);
+// What is published of a file: its points and, for an organized cloud, their pixels.
+struct FileCloud {
+  PointList points;
+  GridLayout grid;
+};
+
+// The file's cloud; throws with the problem when it cannot be read or holds no point.
+FileCloud read_file_cloud(const std::string& path);
 
 struct DeliverySettings {
   int subscribers = 1;           // ingest readers to wait for before each write
@@ -38,7 +44,7 @@ class Delivery {
 
   // Sends the overdue clouds again, waits while too many are pending, then publishes `cloud`;
   // false when stopped.
-  bool send(const PendingCloud& cloud, const PointList& points);
+  bool send(const PendingCloud& cloud, const FileCloud& file);
 
   // Waits for every outstanding result, sending again the overdue ones; returns the ids that
   // still have none (after result_timeout_s without progress, or when stopped).
@@ -50,7 +56,7 @@ class Delivery {
  private:
   bool tracked() const { return watch_.has_value(); }
   bool resend_overdue();
-  bool publish(const PendingCloud& cloud, const PointList& points);
+  bool publish(const PendingCloud& cloud, const FileCloud& file);
 
   RawWriter& writer_;
   DeliverySettings settings_;

@@ -1,7 +1,7 @@
 // cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--resend-after S] FILE_OR_DIR...
-// Reads clouds with io::read_cloud and publishes each on the raw-cloud topic, once a subscriber
-// (the ingest service) is there, then waits for each cloud's result and sends again the clouds
-// whose result is overdue (README "No lost clouds"). Reports on stderr.
+// Reads clouds with io::read_cloud and publishes each on the raw-cloud topic (an organized one with
+// its pixels), once a subscriber (the ingest service) is there, then waits for each cloud's result
+// and sends again the clouds whose result is overdue (README "No lost clouds"). Reports on stderr.
 // Exit: 0, 2 if a file was bad, 1 if no subscriber or a cloud got no result.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -116,19 +116,19 @@ int main(int argc, char** argv) {
     const auto period = rate > 0 ? std::chrono::duration<double>(1.0 / rate) : std::chrono::duration<double>(0);
     // Files sent more than once are read once, so reading does not limit a steady rate.
     const bool repeats = loop || count > 0;
-    std::map<std::string, cs::PointList> read_once;
+    std::map<std::string, cs::inject::FileCloud> read_once;
     const auto started = Clock::now();
     auto next = started;
     do {
       for (const std::string& path : files) {
         if (g_stop || (count > 0 && sent >= count)) break;
-        cs::PointList points;
+        cs::inject::FileCloud file;
         try {
           if (const auto found = read_once.find(path); found != read_once.end()) {
-            points = found->second;
+            file = found->second;
           } else {
-            points = cs::inject::read_points(path);
-            if (repeats) read_once.emplace(path, points);
+            file = cs::inject::read_file_cloud(path);
+            if (repeats) read_once.emplace(path, file);
           }
         } catch (const std::exception& e) {
           say(path + ": " + e.what());
@@ -140,8 +140,12 @@ int main(int argc, char** argv) {
           next += std::chrono::duration_cast<Clock::duration>(period);
         }
         const cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
-        if (!delivery.send(cloud, points)) break;
-        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(points.size()) + " points)");
+        if (!delivery.send(cloud, file)) break;
+        const std::string grid = file.grid.organized() ? ", " + std::to_string(file.grid.width) + " x " +
+                                                             std::to_string(file.grid.height) + " grid"
+                                                       : "";
+        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(file.points.size()) +
+            " points" + grid + ")");
         ++id;
         ++sent;
       }

@@ -1,4 +1,4 @@
-// The three subcommands of cloudshape-synth; each registers its options and its action.
+// The subcommands of cloudshape-synth; each registers its options and its action.
 // Actions throw std::exception with a one-line message naming the input; main reports it.
 #pragma once
 
@@ -9,5 +9,6 @@ namespace cloudshape::synth_tool {
 void add_shape_command(CLI::App& app);
 void add_suite_command(CLI::App& app);
 void add_mesh_command(CLI::App& app);
+void add_scene_command(CLI::App& app);
 
 }  // namespace cloudshape::synth_tool

@@ -4,12 +4,13 @@
 #include <iostream>
 
 int main(int argc, char** argv) {
-  CLI::App app{"Synthetic point clouds with ground truth, and mesh-to-cloud sampling.",
+  CLI::App app{"Synthetic point clouds and scenes with ground truth, and mesh-to-cloud sampling.",
                "cloudshape-synth"};
   app.require_subcommand(1);
   cloudshape::synth_tool::add_shape_command(app);
   cloudshape::synth_tool::add_suite_command(app);
   cloudshape::synth_tool::add_mesh_command(app);
+  cloudshape::synth_tool::add_scene_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

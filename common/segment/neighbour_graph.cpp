@@ -1,0 +1,275 @@
+#include "segment/neighbour_graph.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "geometry/kdtree.hpp"
+#include "geometry/voxel_grid.hpp"
+
+namespace cloudshape::segment {
+namespace {
+
+// Running first and second moments of a point set, for a normal without storing the points.
+struct Moments {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // subtracted first: keeps float64 sums exact enough far from 0
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  std::size_t count = 0;
+
+  void add(const Point& p) {
+    const Eigen::Vector3d d = p - origin;
+    sum += d;
+    outer.noalias() += d * d.transpose();
+    ++count;
+  }
+};
+
+// Normal (smallest principal direction) and surface variation; a default up normal when the
+// neighbourhood is too small to say.
+void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature) {
+  if (m.count < 3) {
+    normal = Eigen::Vector3d::UnitZ();
+    curvature = 1.0 / 3.0;
+    return;
+  }
+  const Eigen::Vector3d mean = m.sum / static_cast<double>(m.count);
+  const Eigen::Matrix3d cov = m.outer / static_cast<double>(m.count) - mean * mean.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(cov);
+  normal = eig.eigenvectors().col(0).normalized();
+  const double total = eig.eigenvalues().sum();
+  curvature = total > 0.0 ? std::max(0.0, eig.eigenvalues()(0)) / total : 0.0;
+}
+
+void to_csr(const std::vector<std::vector<std::uint32_t>>& lists, NeighbourGraph& g) {
+  g.adjacency_begin.assign(lists.size() + 1, 0);
+  for (std::size_t n = 0; n < lists.size(); ++n) {
+    g.adjacency_begin[n + 1] = g.adjacency_begin[n] + static_cast<std::uint32_t>(lists[n].size());
+  }
+  g.adjacency.reserve(g.adjacency_begin.back());
+  for (const auto& l : lists) g.adjacency.insert(g.adjacency.end(), l.begin(), l.end());
+}
+
+void fill_spacing(NeighbourGraph& g, double fallback) {
+  g.spacing.assign(g.size(), fallback);
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    double sum = 0.0;
+    int count = 0;
+    g.for_neighbours(n, [&](std::uint32_t m) {
+      sum += (g.nodes[n] - g.nodes[m]).norm();
+      ++count;
+    });
+    if (count > 0) g.spacing[n] = sum / count;
+  }
+}
+
+}  // namespace
+
+NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& grid,
+                                     const config::SegmentConfig& cfg) {
+  NeighbourGraph g;
+  g.viewpoint = Point::Zero();
+  const std::size_t width = grid.width;
+  const std::size_t height = grid.height;
+  std::vector<std::int32_t> image(width * height, -1);
+  std::vector<double> point_range(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    image[grid.pixel[i]] = static_cast<std::int32_t>(i);
+    point_range[i] = points[i].norm();
+  }
+
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  const std::size_t stride =
+      std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(points.size() / target))));
+  const std::size_t cells_x = (width + stride - 1) / stride;
+  const std::size_t cells_y = (height + stride - 1) / stride;
+  std::vector<std::uint32_t> cell_node(cells_x * cells_y, kNoNode);
+  std::vector<double> range;
+  std::vector<std::size_t> node_pixel;
+
+  // A cell's node is its pixel of median range: one flying pixel at a depth edge cannot be it.
+  std::vector<std::pair<double, std::int32_t>> cell_pixels;
+  for (std::size_t cy = 0; cy < cells_y; ++cy) {
+    for (std::size_t cx = 0; cx < cells_x; ++cx) {
+      cell_pixels.clear();
+      for (std::size_t y = cy * stride; y < std::min(height, (cy + 1) * stride); ++y) {
+        for (std::size_t x = cx * stride; x < std::min(width, (cx + 1) * stride); ++x) {
+          const std::int32_t i = image[y * width + x];
+          if (i >= 0) cell_pixels.emplace_back(point_range[i], i);
+        }
+      }
+      if (cell_pixels.empty()) continue;
+      std::nth_element(cell_pixels.begin(), cell_pixels.begin() + cell_pixels.size() / 2, cell_pixels.end());
+      const auto& chosen = cell_pixels[cell_pixels.size() / 2];
+      cell_node[cy * cells_x + cx] = static_cast<std::uint32_t>(g.nodes.size());
+      g.nodes.push_back(points[chosen.second]);
+      range.push_back(chosen.first);
+      node_pixel.push_back(grid.pixel[chosen.second]);
+    }
+  }
+
+  const auto same_surface = [&](double ra, double rb) {
+    return std::abs(ra - rb) <= cfg.depth_jump * std::min(ra, rb);
+  };
+  std::vector<std::vector<std::uint32_t>> lists(g.size());
+  for (std::size_t cy = 0; cy < cells_y; ++cy) {
+    for (std::size_t cx = 0; cx < cells_x; ++cx) {
+      const std::uint32_t a = cell_node[cy * cells_x + cx];
+      if (a == kNoNode) continue;
+      const int offsets[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
+      for (const auto& o : offsets) {
+        const std::ptrdiff_t nx = static_cast<std::ptrdiff_t>(cx) + o[0];
+        const std::size_t ny = cy + o[1];
+        if (nx < 0 || nx >= static_cast<std::ptrdiff_t>(cells_x) || ny >= cells_y) continue;
+        const std::uint32_t b = cell_node[ny * cells_x + nx];
+        if (b == kNoNode || !same_surface(range[a], range[b])) continue;
+        lists[a].push_back(b);
+        lists[b].push_back(a);
+      }
+    }
+  }
+  to_csr(lists, g);
+  fill_spacing(g, 0.0);
+
+  // Every point joins the node of its cell, or of a neighbouring cell, on its side of any jump.
+  g.node_of_point.assign(points.size(), kNoNode);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::size_t px = grid.pixel[i] % width;
+    const std::size_t py = grid.pixel[i] / width;
+    const std::size_t cx = px / stride;
+    const std::size_t cy = py / stride;
+    const double r = point_range[i];
+    const auto node_at = [&](std::ptrdiff_t ox, std::ptrdiff_t oy) {
+      const std::ptrdiff_t nx = static_cast<std::ptrdiff_t>(cx) + ox;
+      const std::ptrdiff_t ny = static_cast<std::ptrdiff_t>(cy) + oy;
+      if (nx < 0 || ny < 0 || nx >= static_cast<std::ptrdiff_t>(cells_x) ||
+          ny >= static_cast<std::ptrdiff_t>(cells_y)) {
+        return kNoNode;
+      }
+      const std::uint32_t n = cell_node[static_cast<std::size_t>(ny) * cells_x + static_cast<std::size_t>(nx)];
+      return n != kNoNode && same_surface(r, range[n]) ? n : kNoNode;
+    };
+    std::uint32_t best = node_at(0, 0);
+    double best_d = std::numeric_limits<double>::infinity();
+    if (best == kNoNode) {
+      for (int oy = -1; oy <= 1; ++oy) {
+        for (int ox = -1; ox <= 1; ++ox) {
+          const std::uint32_t n = node_at(ox, oy);
+          if (n == kNoNode) continue;
+          const double d = (points[i] - g.nodes[n]).squaredNorm();
+          if (d < best_d) {
+            best = n;
+            best_d = d;
+          }
+        }
+      }
+    }
+    g.node_of_point[i] = best;
+  }
+
+  // Normals from the pixels around each node that lie on its side of every depth jump.
+  const std::ptrdiff_t reach = static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * stride);
+  // One pixel per cell is enough for a covariance, and keeps the cost per node fixed.
+  const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(stride);
+  g.normals.resize(g.size());
+  g.curvature.resize(g.size());
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    const std::ptrdiff_t px = static_cast<std::ptrdiff_t>(node_pixel[n] % width);
+    const std::ptrdiff_t py = static_cast<std::ptrdiff_t>(node_pixel[n] / width);
+    Moments m;
+    m.origin = g.nodes[n];
+    for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach);
+         y <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach); y += step) {
+      for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, px - reach);
+           x <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach); x += step) {
+        const std::int32_t i = image[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
+        if (i >= 0 && same_surface(range[n], point_range[i])) m.add(points[i]);
+      }
+    }
+    normal_of(m, g.normals[n], g.curvature[n]);
+    if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
+  }
+  return g;
+}
+
+NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg) {
+  NeighbourGraph g;
+  g.node_of_point.assign(points.size(), kNoNode);
+  if (points.empty()) {
+    g.adjacency_begin.assign(1, 0);
+    return g;
+  }
+  const geometry::Bounds box = geometry::bounding_box(points);
+  const Point origin = box.min;
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  // Never finer than three times the sampling: 26-neighbour voxels must connect a surface's points
+  // where its sampling thins out.
+  double voxel = std::max({box.diagonal() / std::sqrt(target),
+                           3.0 * geometry::mean_nearest_neighbour_distance(points), 1e-300});
+
+  using Key = std::uint64_t;
+  const auto key_of = [&](const Point& p, double v) {
+    const Eigen::Vector3d c = ((p - origin) / v).array().floor();
+    return (static_cast<Key>(c.x()) << 42) | (static_cast<Key>(c.y()) << 21) | static_cast<Key>(c.z());
+  };
+  std::unordered_map<Key, std::uint32_t> voxels;
+  // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
+  for (int attempt = 0; attempt < 40; ++attempt) {
+    voxels.clear();
+    voxels.reserve(points.size());
+    for (const Point& p : points) {
+      voxels.emplace(key_of(p, voxel), static_cast<std::uint32_t>(voxels.size()));
+      if (static_cast<double>(voxels.size()) > 1.3 * target) break;
+    }
+    if (static_cast<double>(voxels.size()) <= 1.3 * target) break;
+    voxel *= 1.25;
+  }
+  g.nodes.assign(voxels.size(), Point::Zero());
+  std::vector<std::size_t> counts(voxels.size(), 0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::uint32_t n = voxels.at(key_of(points[i], voxel));
+    g.node_of_point[i] = n;
+    g.nodes[n] += points[i];
+    ++counts[n];
+  }
+  for (std::size_t n = 0; n < g.size(); ++n) g.nodes[n] /= static_cast<double>(counts[n]);
+
+  std::vector<std::vector<std::uint32_t>> lists(g.size());
+  for (const auto& [key, n] : voxels) {
+    const std::int64_t x = static_cast<std::int64_t>(key >> 42);
+    const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
+    const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0) continue;
+          if (x + dx < 0 || y + dy < 0 || z + dz < 0) continue;
+          const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
+          const auto it = voxels.find(k);
+          if (it != voxels.end()) lists[n].push_back(it->second);
+        }
+      }
+    }
+  }
+  for (auto& l : lists) std::sort(l.begin(), l.end());
+  to_csr(lists, g);
+  fill_spacing(g, voxel);
+
+  const geometry::KdTree tree(g.nodes);
+  const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
+  std::vector<std::uint32_t> near;
+  g.normals.resize(g.size());
+  g.curvature.resize(g.size());
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    tree.knn(g.nodes[n], k, near);
+    Moments m;
+    m.origin = g.nodes[n];
+    for (std::uint32_t j : near) m.add(g.nodes[j]);
+    normal_of(m, g.normals[n], g.curvature[n]);
+  }
+  return g;
+}
+
+}  // namespace cloudshape::segment

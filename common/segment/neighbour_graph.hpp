@@ -1,0 +1,47 @@
+// A cloud as a graph for segmentation: nodes (one per pixel cell of an organized cloud, one per
+// voxel otherwise) with surface normals, edges between neighbours that are not across a depth jump.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::segment {
+
+inline constexpr std::uint32_t kNoNode = std::numeric_limits<std::uint32_t>::max();
+
+struct NeighbourGraph {
+  PointList nodes;
+  std::vector<Eigen::Vector3d> normals;  // unit; towards the viewpoint when there is one
+  std::vector<double> curvature;         // surface variation of each node's neighbourhood
+  std::vector<double> spacing;           // each node's typical distance to its neighbours
+  std::vector<std::uint32_t> adjacency_begin;  // CSR: neighbours of n are adjacency[begin[n] .. begin[n+1])
+  std::vector<std::uint32_t> adjacency;
+  std::vector<std::uint32_t> node_of_point;    // per input point: its node, or kNoNode
+  std::optional<Point> viewpoint;              // the sensor's position, when known (organized clouds)
+
+  std::size_t size() const { return nodes.size(); }
+  template <class F>
+  void for_neighbours(std::uint32_t n, F&& f) const {
+    for (std::uint32_t e = adjacency_begin[n]; e < adjacency_begin[n + 1]; ++e) f(adjacency[e]);
+  }
+};
+
+// Organized cloud (grid.organized()): cells of s x s pixels, s chosen so that about
+// cfg.target_nodes cells hold points; a cell's node is one of its pixels; 8-neighbour cells are
+// connected unless their ranges (distance from the sensor at the origin) differ by more than
+// cfg.depth_jump of the nearer range. Normals from the pixels in a window of cfg.normal_radius
+// cells on the same side of every depth jump.
+NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& grid,
+                                     const config::SegmentConfig& cfg);
+
+// Any cloud: voxels whose edge is chosen so that about cfg.target_nodes are occupied; a
+// voxel's node is its centroid, 26-neighbour voxels are connected; normals from the
+// cfg.normal_neighbours nearest nodes, unoriented (no viewpoint).
+NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg);
+
+}  // namespace cloudshape::segment

@@ -1,0 +1,27 @@
+// Scene segmentation, one pure function from a cloud to its objects: the same path for a lone
+// solid, several apart, and a cluttered table-top or lidar scene (organized clouds keep their grid).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/point_cloud.hpp"
+#include "segment/structure_planes.hpp"
+
+namespace cloudshape::segment {
+
+struct SceneSegmentation {
+  // Per object, indices into the input points, largest object first.
+  std::vector<std::vector<std::uint32_t>> objects;
+  std::vector<StructurePlane> structure;  // tables, floors, walls removed
+  std::size_t nodes = 0;                  // size of the graph segmented
+};
+
+// The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
+// convex segments; segments under cfg.min_object_nodes nodes or cfg.min_object_share of the
+// nodes are clutter, narrow ones smaller than cfg.fragment_max_share of the largest are slivers,
+// and flat segments lying in a structure plane are leftovers of it.
+SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg);
+
+}  // namespace cloudshape::segment

@@ -1,0 +1,31 @@
+// Structure of a scene: the tables, floors and walls that objects stand on or against, told
+// from a solid's own large face by what stands on the plane's open side and how far it reaches.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/plane.hpp"
+#include "segment/neighbour_graph.hpp"
+
+namespace cloudshape::segment {
+
+struct StructurePlane {
+  geometry::Plane plane;        // normal towards the side things stand on
+  std::size_t nodes = 0;        // nodes removed with it
+  double covered_ratio = 0.0;   // its area over the footprint of what stands on it
+};
+
+// Finds, one after the other, the plane through most nodes whose normals agree with it
+// (cfg.structure_band node spacings, cfg.structure_normal_degrees), and removes its largest
+// connected part (sets `removed`) while it holds cfg.structure_min_share of the nodes, at least
+// cfg.structure_min_standing nodes stand on its open side (the viewer's, else the side most other
+// nodes are on), its area is at least cfg.structure_reach times their footprint and it reaches
+// beyond that footprint by cfg.structure_margin of its extent on three of its four sides: a
+// solid's own face has its solid behind it, covers no more than the solid does, and meets the
+// solid's other faces at its own edges. Deterministic for a given cfg.seed.
+std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
+                                             std::vector<char>& removed);
+
+}  // namespace cloudshape::segment
