@@ -7,7 +7,7 @@
 #   tools/test.sh --bench    # only the benchmarks: wall-time bounds, best on an idle machine
 #   tools/test.sh -R REGEX   # only the tests whose name matches (ctest -R), still without
 #                            # "long" and "bench" unless --long / --bench is given too
-#   tools/test.sh --sanitize # ASan + UBSan build in build-sanitize/: the unit-test executables
+#   tools/test.sh --sanitize # ASan + UBSan build in build-sanitize/: unit tests, then process tests
 #
 # Environment: CLOUDSHAPE_BUILD_DIR (default build/, or build-sanitize/ with --sanitize),
 # CLOUDSHAPE_JOBS (default: all cores), CLOUDSHAPE_CMAKE_ARGS (extra configure arguments),
@@ -44,6 +44,13 @@ sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recogniti
                 io_real_data_test fuzz_regressions_test dds_ingest_sample_test dds_convert_test
                 dds_socket_buffers_test dds_participant_cli_test recognize_cli_test
                 synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test)
+# ... and the process-level tests (ctest names) whose programs then run sanitized: the five
+# services, inject and echo (DDS pipeline and crafted samples), recognize, and cloudshape-synth's
+# shape, suite and mesh commands. Left out for the CI's time budget: the fault and soak tests
+# (the same programs, longer) and the security tests (their participant set-up is sanitized
+# only through dds_participant_cli_test).
+sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test mesh_view_cli_test cloudshape-synth)
+sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
 if ((sanitize)); then
   ((long == 0 && bench == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
   [[ -n "${CLOUDSHAPE_BUILD_DIR_SET:-}" ]] || CLOUDSHAPE_BUILD_DIR="$CLOUDSHAPE_REPO/build-sanitize"
@@ -58,15 +65,24 @@ start=$SECONDS
 cd "$CLOUDSHAPE_REPO"
 cs_ensure_packages
 if ((sanitize)); then
-  cs_configure_and_build "${sanitize_tests[@]}"
+  cs_configure_and_build "${sanitize_tests[@]}" "${sanitize_process_targets[@]}"
+  built=$((SECONDS - start))
   failed=()
   for t in "${sanitize_tests[@]}"; do
     cs_log "sanitized: $t"
     "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 >&2 || failed+=("$t")
   done
+  units=$((SECONDS - start - built))
+  cs_log "sanitized: process-level tests (ctest -R '$sanitize_process_tests')"
+  # Fast DDS 2.9 deletes its statistics readers and writers through a base of another size
+  # inside libfastrtps (new-delete-type-mismatch at every endpoint deletion, not in our code;
+  # the unit-test programs above keep the check).
+  ASAN_OPTIONS="$ASAN_OPTIONS:new_delete_type_mismatch=0" ctest --test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error -j "$CLOUDSHAPE_JOBS" \
+        --timeout "${CLOUDSHAPE_TEST_TIMEOUT:-600}" -R "$sanitize_process_tests" >&2 || failed+=(process-level)
   elapsed=$((SECONDS - start))
-  ((${#failed[@]} == 0)) || cs_die "FAIL under ASan + UBSan after ${elapsed}s: ${failed[*]}"
-  cs_log "PASS: ${#sanitize_tests[@]} unit-test programs clean under ASan + UBSan in ${elapsed}s"
+  times="build ${built}s, unit programs ${units}s, process tests $((elapsed - built - units))s"
+  ((${#failed[@]} == 0)) || cs_die "FAIL under ASan + UBSan after ${elapsed}s ($times): ${failed[*]}"
+  cs_log "PASS: ${#sanitize_tests[@]} unit-test programs and the process-level tests clean under ASan + UBSan in ${elapsed}s ($times)"
   exit 0
 fi
 cs_configure_and_build

@@ -21,6 +21,7 @@
 #include "pipeline_harness.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
+#include "test_domains.hpp"
 
 namespace cloudshape::testing {
 namespace {
@@ -28,7 +29,6 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 using ::testing::HasSubstr;
 
-constexpr int kDomain = 50;        // + CLOUDSHAPE_TEST_DOMAIN_OFFSET, as every DDS test
 constexpr int kMaxPoints = 5000;   // input.max_points of this test's configuration
 constexpr std::uint64_t kUndecodableId = 4242;  // the id of the sample that does not deserialize
 
@@ -97,7 +97,7 @@ std::map<std::string, std::uint64_t> echoed_ids(const std::string& echo_log) {
 }
 
 TEST(DdsBadSamples, EverySampleGivesOneResultNamingTheProblem) {
-  Pipeline p("bad-samples", kDomain);
+  Pipeline p("bad-samples", domains::bad_samples);
   const std::string config = p.dir() + "/pipeline.yaml";
   std::ofstream(config) << "input:\n  max_points: " << kMaxPoints << "\n";
   const std::vector<Sample> sent = samples();

@@ -16,7 +16,9 @@
 #include <vector>
 
 #include "pipeline_harness.hpp"
+#include "same_results.hpp"
 #include "report/result_json.hpp"
+#include "test_domains.hpp"
 
 namespace cloudshape::testing {
 namespace {
@@ -35,8 +37,9 @@ void run_or_throw(const std::vector<std::string>& argv) {
 
 // `count` small clouds with distinct file names (so distinct `source`s): symbolic links to the
 // six synthetic solids and a two-object cloud (box + sphere), which the solver answers in two
-// samples. Returns the links, and in `shapes` each link's expected shapes (from recognize).
-std::vector<std::string> make_clouds(const std::string& dir, int count, std::map<std::string, std::string>& shapes) {
+// samples. Returns the links, and in `expected` each link's result (recognize's for its target).
+using Expected = std::map<std::string, pipeline::RecognitionResult>;
+std::vector<std::string> make_clouds(const std::string& dir, int count, Expected& expected) {
   const std::string base = dir + "/base";
   run_or_throw({kBin + "/cloudshape-synth", "suite", "--out", base, "--points", "2000", "--seed", "11", "--count", "1"});
   for (const auto& [shape, dims] : {std::pair<std::string, std::string>{"box", "30,20,10"}, {"sphere", "12"}}) {
@@ -56,13 +59,12 @@ std::vector<std::string> make_clouds(const std::string& dir, int count, std::map
     if (e.path().extension() != ".json") bases.push_back(e.path().string());
   }
   std::sort(bases.begin(), bases.end());
-  std::map<std::string, std::string> base_shapes;
+  Expected base_results;
   for (const std::string& line : recognize(bases)) {
     const pipeline::RecognitionResult res = report::result_from_json_line(line);
-    std::string s;
-    for (const auto& o : res.objects) s += o.shape + " ";
-    base_shapes[res.source] = s;
+    base_results[res.source] = res;
   }
+  if (base_results.size() != bases.size()) throw std::runtime_error("cloudshape-recognize missed a cloud");
   std::vector<std::string> links;
   for (int i = 0; i < count; ++i) {
     const fs::path target = bases[static_cast<std::size_t>(i) % bases.size()];
@@ -71,7 +73,9 @@ std::vector<std::string> make_clouds(const std::string& dir, int count, std::map
     const fs::path link = fs::path(dir) / (name + target.filename().string());
     fs::create_symlink(target, link);
     links.push_back(link.string());
-    shapes[link.filename().string()] = base_shapes.at(target.filename().string());
+    pipeline::RecognitionResult r = base_results.at(target.filename().string());
+    r.source = link.filename().string();
+    expected[r.source] = r;
   }
   return links;
 }
@@ -136,12 +140,12 @@ class FaultRig {
     return true;
   }
 
-  // Stops echo after a grace period in which late duplicates would still arrive, then every
-  // service (each must exit 0); returns echo's lines.
+  // Called once inject saw every result: what still comes is a duplicate. The services stop
+  // first (each must exit 0), so echo hears every late one they sent until they were down
+  // rather than those of a guessed grace period; then echo. Returns echo's lines.
   std::vector<std::string> finish() {
-    std::this_thread::sleep_for(2s);
-    EXPECT_EQ(procs_.stop(echo_, 30s), 0) << read_text(dir_ + "/echo.log");
     for (const auto& [stage, pid] : pids_) EXPECT_EQ(procs_.stop(pid, 30s), 0) << stage;
+    EXPECT_EQ(procs_.stop(echo_, 30s), 0) << read_text(dir_ + "/echo.log");
     return lines_of(read_text(dir_ + "/echo.jsonl"));
   }
 
@@ -174,26 +178,27 @@ int count_matches(const std::string& text, const std::string& pattern) {
   return static_cast<int>(std::distance(std::sregex_iterator(text.begin(), text.end(), re), std::sregex_iterator()));
 }
 
-// Exactly one line per injected cloud, none twice, each with the shapes recognize finds.
-void expect_each_cloud_once(const std::vector<std::string>& lines, const std::map<std::string, std::string>& shapes) {
+// Exactly one line per injected cloud, none twice, each the result recognize gives, field by
+// field (same_results.hpp): a cloud sent again after a fault must come back the same.
+void expect_each_cloud_once(const std::vector<std::string>& lines, const Expected& expected) {
   std::set<std::string> seen;
   for (const std::string& line : lines) {
     const pipeline::RecognitionResult r = report::result_from_json_line(line);
     EXPECT_TRUE(seen.insert(r.source).second) << "two results for " << r.source;
-    ASSERT_EQ(shapes.count(r.source), 1u) << "a result for a cloud never sent: " << r.source;
-    std::string s;
-    for (const auto& o : r.objects) s += o.shape + " ";
-    EXPECT_EQ(s, shapes.at(r.source)) << r.source;
+    ASSERT_EQ(expected.count(r.source), 1u) << "a result for a cloud never sent: " << r.source;
+    std::string report;
+    for (const std::string& d : result_differences(expected.at(r.source), r, r.source)) report += d + "\n";
+    EXPECT_TRUE(report.empty()) << report;
   }
-  EXPECT_EQ(lines.size(), shapes.size());
-  EXPECT_EQ(seen.size(), shapes.size());
+  EXPECT_EQ(lines.size(), expected.size());
+  EXPECT_EQ(seen.size(), expected.size());
 }
 
 // Kills each of `victims` with SIGKILL once echo printed its share of `count` results, and
 // starts it again half a second later; then checks every cloud came back once.
 void run_with_kills(FaultRig& rig, int count, const std::vector<std::string>& victims) {
-  std::map<std::string, std::string> shapes;
-  const std::vector<std::string> files = make_clouds(rig.dir(), count, shapes);
+  Expected expected;
+  const std::vector<std::string> files = make_clouds(rig.dir(), count, expected);
   rig.start_echo();
   for (const std::string& s : kStages) rig.start(s);
   rig.start_inject(files, "20");
@@ -204,7 +209,7 @@ void run_with_kills(FaultRig& rig, int count, const std::vector<std::string>& vi
     rig.kill9_and_restart(victims[k], 500ms);
   }
   ASSERT_EQ(rig.wait_inject(300s), 0) << "inject did not see every result; its log:\n" << rig.inject_log();
-  expect_each_cloud_once(rig.finish(), shapes);
+  expect_each_cloud_once(rig.finish(), expected);
   for (const std::string& v : victims) {
     // Killed mid-stream: both incarnations did work.
     EXPECT_GE(count_matches(read_text(rig.log(v, 1)), "cloud [0-9]+ .*: (done|error passed on)"), 1) << v;
@@ -216,13 +221,13 @@ void run_with_kills(FaultRig& rig, int count, const std::vector<std::string>& vi
 
 // Short form for the default run: two kills (the first and the last stage) in 40 clouds.
 TEST(DdsFaults, KilledStagesLoseNoCloud) {
-  FaultRig rig("kill-short", 55);
+  FaultRig rig("kill-short", domains::faults_killed_stages);
   run_with_kills(rig, 40, {"planes", "solver"});
 }
 
 // The acceptance run: 200 clouds at 20 Hz, each of the five services killed once.
 TEST(DdsFaults, EveryServiceKilledOnceLosesNoCloud) {
-  FaultRig rig("kill-long", 56);
+  FaultRig rig("kill-long", domains::faults_every_service_killed);
   run_with_kills(rig, 200, {"ingest", "planes", "keypoints", "classifier", "solver"});
 }
 
@@ -243,8 +248,8 @@ bool gdb_can_stop_processes() {
 void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& rate,
                                    const std::vector<std::string>& victims) {
   if (!gdb_can_stop_processes()) GTEST_SKIP() << "gdb cannot stop processes here (missing, or ptrace refused)";
-  std::map<std::string, std::string> shapes;
-  const std::vector<std::string> files = make_clouds(rig.dir(), count, shapes);
+  Expected expected;
+  const std::vector<std::string> files = make_clouds(rig.dir(), count, expected);
   rig.start_echo();
   for (const std::string& s : kStages) rig.start(s);
   rig.start_inject(files, rate);
@@ -258,7 +263,7 @@ void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& 
     EXPECT_NE(gdb.find("hit Breakpoint"), std::string::npos) << victims[k] << " was not stopped in a receive:\n" << gdb;
   }
   ASSERT_EQ(rig.wait_inject(300s), 0) << "inject did not see every result; its log:\n" << rig.inject_log();
-  expect_each_cloud_once(rig.finish(), shapes);
+  expect_each_cloud_once(rig.finish(), expected);
   std::printf("%d clouds, %zu services killed inside a receive: %d sent again by inject; %s\n", count,
               victims.size(), count_matches(rig.inject_log(), "sending it again"), rig.echo_log().c_str());
 }
@@ -266,13 +271,13 @@ void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& 
 // Default run: the first stage (ingest, fed by inject) and the one whose death stalled the
 // shared-memory pipeline (the solver).
 TEST(DdsFaults, KilledInsideAReceiveLosesNoCloud) {
-  FaultRig rig("kill-receive", 70);
+  FaultRig rig("kill-receive", domains::faults_killed_inside_receive);
   run_with_kills_inside_receive(rig, 120, "10", {"ingest", "solver"});
 }
 
 // Each of the five services killed inside a receive, 200 clouds at 10 Hz.
 TEST(DdsFaults, EveryServiceKilledInsideAReceiveLosesNoCloud) {
-  FaultRig rig("kill-receive-long", 71);
+  FaultRig rig("kill-receive-long", domains::faults_every_service_killed_inside_receive);
   run_with_kills_inside_receive(rig, 200, "10", {"ingest", "planes", "keypoints", "classifier", "solver"});
 }
 
@@ -319,19 +324,19 @@ class NetnsPair {
 // inject + ingest on one "host", the other four services and echo on the other, over UDP;
 // the link goes down for 8 s (twice the 4 s lease: the two sides drop each other) and back.
 TEST(DdsFaults, LinkCutLongerThanTheLeaseLosesNoCloud) {
-  const int domain = 57 + domain_offset();
+  const int domain = domains::faults_link_cut + domain_offset();
   NetnsPair net("cs" + std::to_string(domain) + "a", "cs" + std::to_string(domain) + "b", domain);
   if (!net.create()) GTEST_SKIP() << "cannot create network namespaces here (needs root)";
   // The UDP-only profile: shared memory would bypass the veth pair.
   setenv("CLOUDSHAPE_DDS_PROFILE", "cloudshape_udp", 1);
-  FaultRig rig("netcut", 57);
+  FaultRig rig("netcut", domains::faults_link_cut);
   for (const std::string& who : {"inject", "ingest"}) rig.set_prefix(who, net.exec_in(net.a()));
   for (const std::string& who : {"echo", "planes", "keypoints", "classifier", "solver"}) {
     rig.set_prefix(who, net.exec_in(net.b()));
   }
   const int count = 60;
-  std::map<std::string, std::string> shapes;
-  const std::vector<std::string> files = make_clouds(rig.dir(), count, shapes);
+  Expected expected;
+  const std::vector<std::string> files = make_clouds(rig.dir(), count, expected);
   rig.start_echo();
   for (const std::string& s : kStages) rig.start(s);
   rig.start_inject(files, "10");
@@ -340,7 +345,7 @@ TEST(DdsFaults, LinkCutLongerThanTheLeaseLosesNoCloud) {
   std::this_thread::sleep_for(8s);
   net.set_link(true);
   ASSERT_EQ(rig.wait_inject(300s), 0) << "inject did not see every result; its log:\n" << rig.inject_log();
-  expect_each_cloud_once(rig.finish(), shapes);
+  expect_each_cloud_once(rig.finish(), expected);
   // The cut outlasted the lease: ingest saw its subscriber (planes) go.
   EXPECT_GE(count_matches(read_text(rig.log("ingest", 1)), "no subscriber on cloudshape_filtered_cloud"), 1);
   std::printf("%d clouds, link cut 8 s: %d sent again by inject; %s\n", count,

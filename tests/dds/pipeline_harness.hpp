@@ -48,7 +48,8 @@ class Pipeline {
 
   // Another program (stdout to dir/out_name, stderr to its log).
   pid_t start_other(const std::vector<std::string>& argv, const std::string& out_name);
-  int wait_other(pid_t pid) { return procs_.wait(pid, std::chrono::seconds(kEchoTimeoutS + 30)); }
+  int wait_other(pid_t pid) { return wait_other(pid, std::chrono::seconds(kEchoTimeoutS + 30)); }
+  int wait_other(pid_t pid, std::chrono::seconds timeout) { return procs_.wait(pid, timeout); }
   int stop_other(pid_t pid) { return procs_.stop(pid, std::chrono::seconds(30)); }
 
   // Echo's exit status once it printed its --count results (or timed out).
@@ -77,10 +78,10 @@ std::vector<std::string> recognize(const std::vector<std::string>& files);
 
 std::map<std::string, pipeline::RecognitionResult> by_source(const std::vector<std::string>& lines);
 
-// Equal within 1e-6 relative (absolute below 1).
+// Equal within 1e-6 relative (absolute below 1): for numbers other programs print as text.
 bool close(double a, double b);
 
-// The acceptance criterion: same shape, dimensions equal within 1e-6 relative (and the rest too).
+// The acceptance criterion (same_results.hpp): every field of every object, axes included.
 void expect_same_results(const std::vector<std::string>& expected_lines, const std::vector<std::string>& actual_lines);
 
 }  // namespace cloudshape::testing

@@ -1,4 +1,5 @@
-// Per-source comparison of recognizer results: what echo prints against what recognize prints.
+// Per-source comparison of recognizer results: what echo prints against what recognize prints,
+// every field of every object (timings excepted: they are measurements, not results).
 #include "same_results.hpp"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <stdexcept>
 
 #include "report/result_json.hpp"
+#include "same_axes.hpp"
 
 namespace cloudshape::testing {
 namespace {
@@ -29,7 +31,9 @@ Results by_source(const std::vector<std::string>& lines, const std::string& side
   return results;
 }
 
-bool close(double a, double b) { return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)}); }
+bool close(double a, double b) {
+  return std::abs(a - b) <= kSameTolerance * std::max({1.0, std::abs(a), std::abs(b)});
+}
 
 template <typename T>
 std::string str(const T& v) {
@@ -41,20 +45,17 @@ std::string str(const T& v) {
 
 class Differences {
  public:
-  explicit Differences(std::vector<std::string>& out) : out_(out) {}
-  void where(const std::string& w) { where_ = w; }
+  Differences(std::vector<std::string>& out, std::string where) : out_(out), where_(std::move(where)) {}
   template <typename T>
   void equal(const std::string& what, const T& actual, const T& expected) {
-    if (!(actual == expected)) add(what, str(actual), str(expected));
+    if (!(actual == expected)) add(what + " is " + str(actual) + ", expected " + str(expected));
   }
   void near(const std::string& what, double actual, double expected) {
-    if (!close(actual, expected)) add(what, str(actual), str(expected));
+    if (!close(actual, expected)) add(what + " is " + str(actual) + ", expected " + str(expected));
   }
+  void add(const std::string& what) { out_.push_back(where_ + ": " + what); }
 
  private:
-  void add(const std::string& what, const std::string& actual, const std::string& expected) {
-    out_.push_back(where_ + ": " + what + " is " + actual + ", expected " + expected);
-  }
   std::vector<std::string>& out_;
   std::string where_;
 };
@@ -68,6 +69,7 @@ void compare_object(Differences& d, const pipeline::ObjectResult& a, const pipel
     d.near(e.dimensions[i].first, a.dimensions[i].second, e.dimensions[i].second);
   }
   for (int k = 0; k < 3; ++k) d.near("center[" + std::to_string(k) + "]", a.center[k], e.center[k]);
+  if (const std::string why = axes_difference(a, e, kSameTolerance); !why.empty()) d.add(why);
   d.equal("partial", a.partial, e.partial);
   d.equal("corner key-points", a.keypoints.corner, e.keypoints.corner);
   d.equal("edge key-points", a.keypoints.edge, e.keypoints.edge);
@@ -77,6 +79,22 @@ void compare_object(Differences& d, const pipeline::ObjectResult& a, const pipel
 
 }  // namespace
 
+std::vector<std::string> result_differences(const pipeline::RecognitionResult& expected,
+                                            const pipeline::RecognitionResult& actual, const std::string& where) {
+  std::vector<std::string> diffs;
+  Differences d(diffs, where);
+  d.equal("source", actual.source, expected.source);
+  d.equal("points_in", actual.points_in, expected.points_in);
+  d.equal("points_used", actual.points_used, expected.points_used);
+  d.near("resolution", actual.resolution, expected.resolution);
+  d.equal("object count", actual.objects.size(), expected.objects.size());
+  for (std::size_t i = 0; i < std::min(actual.objects.size(), expected.objects.size()); ++i) {
+    Differences od(diffs, where + " object " + std::to_string(i));
+    compare_object(od, actual.objects[i], expected.objects[i]);
+  }
+  return diffs;
+}
+
 std::vector<std::string> result_differences(const std::vector<std::string>& expected_lines,
                                             const std::vector<std::string>& actual_lines) {
   std::vector<std::string> diffs;
@@ -85,23 +103,13 @@ std::vector<std::string> result_differences(const std::vector<std::string>& expe
   for (const auto& [source, a] : actual) {
     if (expected.count(source) == 0) diffs.push_back(source + ": unexpected result");
   }
-  Differences d(diffs);
   for (const auto& [source, e] : expected) {
     const auto found = actual.find(source);
     if (found == actual.end()) {
       diffs.push_back(source + ": no result");
       continue;
     }
-    const pipeline::RecognitionResult& a = found->second;
-    d.where(source);
-    d.equal("points_in", a.points_in, e.points_in);
-    d.equal("points_used", a.points_used, e.points_used);
-    d.near("resolution", a.resolution, e.resolution);
-    d.equal("object count", a.objects.size(), e.objects.size());
-    for (std::size_t i = 0; i < std::min(a.objects.size(), e.objects.size()); ++i) {
-      d.where(source + " object " + std::to_string(i));
-      compare_object(d, a.objects[i], e.objects[i]);
-    }
+    for (std::string& d : result_differences(e, found->second, source)) diffs.push_back(std::move(d));
   }
   return diffs;
 }

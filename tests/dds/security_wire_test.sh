@@ -38,7 +38,13 @@ run_once() {
   tcpdump -i lo -U -w "$capture" "udp portrange $port_lo-$((port_lo + 249))" 2>"$capture.log" &
   tcpdump_pid=$!
   pids+=("$tcpdump_pid")
-  sleep 1
+  # Nothing starts before tcpdump captures: a late capture would make the secured run pass empty.
+  local deadline=$((SECONDS + 60))
+  until grep -q "listening on" "$capture.log"; do
+    ((SECONDS < deadline)) || { echo "FAIL: tcpdump did not start capturing in 60 s"; exit 1; }
+    kill -0 "$tcpdump_pid" 2>/dev/null || { echo "FAIL: tcpdump exited: $(cat "$capture.log")"; exit 1; }
+    sleep 0.1
+  done
   "$bin/cloudshape-echo" --domain "$domain" --security "$security" --count 1 --timeout 60 >"$capture.echo" 2>&1 &
   echo_pid=$!
   pids+=("$echo_pid")
@@ -52,7 +58,6 @@ run_once() {
   wait "$echo_pid"
   for p in "${services[@]}"; do kill -TERM "$p"; done
   for p in "${services[@]}"; do wait "$p"; done
-  sleep 0.5
   kill -INT "$tcpdump_pid"
   wait "$tcpdump_pid" || true
   grep -q "$marker" "$capture.echo" || { echo "FAIL: no result for the cloud"; exit 1; }
@@ -63,6 +68,13 @@ count() { grep -a -c "$1" "$2" || true; }
 run_once "" "$work/plain.pcap"
 run_once "$work/pki" "$work/secured.pcap"
 status=0
+# Both captures hold the run's RTPS messages (their header stays in clear when secured): the
+# secured one is not clean for being empty.
+for run in plain secured; do
+  rtps="$(count RTPS "$work/$run.pcap")"
+  printf 'RTPS in the %s capture: %s lines\n' "$run" "$rtps"
+  ((rtps > 0)) || { echo "FAIL: the $run capture holds no RTPS message"; status=1; }
+done
 for needle in "$marker" RawCloud ShapeResult; do
   plain="$(count "$needle" "$work/plain.pcap")"
   secured="$(count "$needle" "$work/secured.pcap")"

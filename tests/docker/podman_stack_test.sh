@@ -4,14 +4,15 @@
 # namespace of its own, injects the synthetic suite and checks that the echo container prints
 # what cloudshape-recognize prints. Skips (exit 77) without root, podman or a network namespace.
 #
-#   tests/docker/podman_stack_test.sh BIN_DIR COMPARE_EXE [CACHE_DIR]
+#   tests/docker/podman_stack_test.sh BIN_DIR COMPARE_EXE DOMAIN [CACHE_DIR]
 #
 # BIN_DIR holds cloudshape-synth and cloudshape-recognize (host build); COMPARE_EXE is
-# dds_compare_results. CACHE_DIR (default BIN_DIR/../podman) keeps podman's storage between
+# dds_compare_results (field by field, axes included); DOMAIN is the test's DDS domain
+# (tests/dds/domains.cmake) + CLOUDSHAPE_TEST_DOMAIN_OFFSET inside the containers.
+# CACHE_DIR (default BIN_DIR/../podman) keeps podman's storage between
 # runs: the base image (debootstrapped again only when the package list or mirror changes) and
 # the build layers (rebuilt only when the sources change). Installs podman, runc,
 # podman-compose and debootstrap when missing (tools/lib/deps.sh, CLOUDSHAPE_CONTAINER_PACKAGES).
-# Domain 46 + CLOUDSHAPE_TEST_DOMAIN_OFFSET inside the containers.
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
 CLOUDSHAPE_LOG_TAG=podman_stack_test
@@ -20,10 +21,11 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 source "$here/../../tools/lib/deps.sh"
 
 skip() { cs_log "SKIP: $*"; exit 77; }
-(($# >= 2)) || { sed -n '2,15s/^# \{0,1\}//p' "${BASH_SOURCE[0]}" >&2; exit 2; }
+(($# >= 3)) || { sed -n '2,16s/^# \{0,1\}//p' "${BASH_SOURCE[0]}" >&2; exit 2; }
 bin="$(cd "$1" && pwd)"
 compare="$2"
-cache="${3:-$bin/../podman}"
+domain="$3"
+cache="${4:-$bin/../podman}"
 for exe in "$bin/cloudshape-synth" "$bin/cloudshape-recognize" "$compare"; do
   [[ -x "$exe" ]] || cs_die "$exe: not built"
 done
@@ -127,7 +129,7 @@ mapfile -t clouds < <(find "$work/samples" -name '*.pcd' | sort)
 "$bin/cloudshape-recognize" "${clouds[@]}" >"$work/expected.jsonl"
 
 export BASE="$base" CLOUDSHAPE_SAMPLES="$work/samples"
-export CLOUDSHAPE_DOMAIN=$((46 + ${CLOUDSHAPE_TEST_DOMAIN_OFFSET:-0}))
+export CLOUDSHAPE_DOMAIN=$((domain + ${CLOUDSHAPE_TEST_DOMAIN_OFFSET:-0}))
 compose() { in_ns podman-compose -p "$project" -f "$compose_file" "$@"; }
 compose up -d >"$work/up.log" 2>&1 || { cat "$work/up.log" >&2; cs_die "podman-compose up failed"; }
 # podman-compose 1.0.3 ignores compose profiles and starts inject with the rest; docker-compose
