@@ -202,9 +202,9 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     std::vector<std::uint32_t> standing, contact;
     for (std::uint32_t n : active) {
       const double height = fit.plane.signed_distance(g.nodes[n]) / g.spacing[n];
-      if (inlier[n] || height <= cfg.structure_band) continue;
+      if (inlier[n] || height <= 0.0) continue;
       standing.push_back(n);
-      if (height <= cfg.structure_contact * cfg.structure_band) contact.push_back(n);
+      if (height > cfg.structure_band && height <= cfg.structure_contact * cfg.structure_band) contact.push_back(n);
     }
     const double cell = 2.0 * median_spacing(g, fit.inliers);
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
