@@ -163,6 +163,42 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   EXPECT_NE(table.out.find("2 scenes of"), std::string::npos) << table.out;
 }
 
+// The scene gate: all 45 labelled Kinect frames of mosd_learn, per category, floors a few
+// points under what the README's table shows (cloudshape-bench --scenes): objects named right,
+// segmentation overlap, false objects and duplicates per scene. About 5 s.
+TEST_F(BenchScenes, MosdLearnPerCategoryFloors) {
+  const fs::path learn = testing::shared_data_path("real/mosd_learn");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn44.pcd");
+  const auto run = run_process({kBin, "--scenes", learn.string(), "--json"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  struct Floor {
+    const char* category;
+    int objects;
+    double right_pct;
+    double iou;
+  };
+  // README "Scenes": boxes 97.4%, stacked 100%, occluded 93.8%, cylindric 65.8%, all 86.6%;
+  // IoU 0.987, 0.978, 0.953, 0.951, 0.969.
+  const std::vector<Floor> floors = {{"boxes", 38, 94.0, 0.96},
+                                     {"stacked_boxes", 20, 95.0, 0.95},
+                                     {"occluded", 16, 87.0, 0.92},
+                                     {"cylindric", 38, 60.0, 0.92},
+                                     {"all", 112, 83.0, 0.94}};
+  ASSERT_EQ(out.at("rows").size(), floors.size());
+  for (std::size_t k = 0; k < floors.size(); ++k) {
+    const Json& row = out.at("rows").at(k);
+    SCOPED_TRACE(floors[k].category);
+    EXPECT_EQ(row.at("category"), floors[k].category);
+    EXPECT_EQ(row.at("objects"), floors[k].objects);
+    EXPECT_GE(row.at("right_pct").get<double>(), floors[k].right_pct);
+    EXPECT_GE(row.at("iou_mean").get<double>(), floors[k].iou);
+    EXPECT_LE(row.at("false_per_scene").get<double>(), 0.1);
+    EXPECT_LE(row.at("duplicates").get<int>(), 2);
+    EXPECT_EQ(row.at("table_objects"), 0);
+  }
+}
+
 TEST_F(BenchScenes, BadInputIsRefusedNamingIt) {
   const auto expect_refused = [](const std::vector<std::string>& args, const std::string& what) {
     const auto run = run_process(args);
