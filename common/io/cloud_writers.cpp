@@ -52,6 +52,19 @@ void append_binary_rows(std::string& out, const PointList& points) {
   }
 }
 
+// The binary_compressed body: the compressed and raw sizes, then the LZF stream of `raw`.
+void append_lzf_block(std::string& out, const void* raw, std::size_t raw_size) {
+  // LZF grows incompressible input by at most one byte in 32, plus a little.
+  std::vector<char> packed(raw_size + raw_size / 16 + 64);
+  const auto in_size = static_cast<unsigned int>(raw_size);
+  const unsigned int packed_size =
+      raw_size == 0 ? 0 : lzf_compress(raw, in_size, packed.data(), static_cast<unsigned int>(packed.size()));
+  if (raw_size != 0 && packed_size == 0) throw std::runtime_error("LZF compression failed");
+  const std::uint32_t sizes[2] = {packed_size, in_size};
+  out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
+  out.append(packed.data(), packed_size);
+}
+
 template <typename T>
 void append_compressed_block(std::string& out, const PointList& points) {
   const std::size_t n = points.size();
@@ -62,15 +75,7 @@ void append_compressed_block(std::string& out, const PointList& points) {
   for (std::size_t i = 0; i < n; ++i) {
     for (int a = 0; a < 3; ++a) soa[a * n + i] = static_cast<T>(points[i][a]);
   }
-  // LZF grows incompressible input by at most one byte in 32, plus a little.
-  std::vector<char> packed(raw_size + raw_size / 16 + 64);
-  const auto in_size = static_cast<unsigned int>(raw_size);
-  const unsigned int packed_size =
-      raw_size == 0 ? 0 : lzf_compress(soa.data(), in_size, packed.data(), static_cast<unsigned int>(packed.size()));
-  if (raw_size != 0 && packed_size == 0) throw std::runtime_error("LZF compression failed");
-  const std::uint32_t sizes[2] = {packed_size, in_size};
-  out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
-  out.append(packed.data(), packed_size);
+  append_lzf_block(out, soa.data(), raw_size);
 }
 
 // One row of x y z label per point, as float coordinates and an unsigned label.
@@ -114,14 +119,7 @@ void append_labelled_compressed(std::string& out, const PointList& points,
     }
     std::memcpy(soa.data() + (3 * n + i) * 4, &labels[i], 4);
   }
-  std::vector<char> packed(raw_size + raw_size / 16 + 64);
-  const auto in_size = static_cast<unsigned int>(raw_size);
-  const unsigned int packed_size =
-      raw_size == 0 ? 0 : lzf_compress(soa.data(), in_size, packed.data(), static_cast<unsigned int>(packed.size()));
-  if (raw_size != 0 && packed_size == 0) throw std::runtime_error("LZF compression failed");
-  const std::uint32_t sizes[2] = {packed_size, in_size};
-  out.append(reinterpret_cast<const char*>(sizes), sizeof sizes);
-  out.append(packed.data(), packed_size);
+  append_lzf_block(out, soa.data(), raw_size);
 }
 
 void write_file(const std::string& path, const std::string& bytes) {

@@ -15,7 +15,6 @@ struct SceneSegmentation {
   // Per object, indices into the input points, largest object first.
   std::vector<std::vector<std::uint32_t>> objects;
   std::vector<StructurePlane> structure;  // tables, floors, walls removed
-  std::size_t nodes = 0;                  // size of the graph segmented
 };
 
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,

@@ -217,7 +217,7 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       continue;
     }
     for (std::uint32_t n : fit.inliers) removed[n] = 1;
-    found.push_back({fit.plane, fit.inliers.size(), ratio});
+    found.push_back({fit.plane, fit.inliers.size()});
   }
   return found;
 }

@@ -14,7 +14,6 @@ namespace cloudshape::segment {
 struct StructurePlane {
   geometry::Plane plane;        // normal towards the side things stand on
   std::size_t nodes = 0;        // nodes removed with it
-  double covered_ratio = 0.0;   // its area over the footprint of what stands on it
 };
 
 // Finds, one after the other, the plane through most nodes whose normals agree with it

@@ -2,6 +2,8 @@
 // IoU prints as "n/a" while the recognizer reports no point indices.
 #include "scene_report.hpp"
 
+#include "bench_stats.hpp"
+
 #include <algorithm>
 
 namespace cloudshape::bench {
@@ -76,16 +78,9 @@ nlohmann::ordered_json row_json(const std::string& category, const SceneTally& t
 
 }  // namespace
 
-double median_of(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 == 1 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double median_of(std::vector<double> v) { return percentile(std::move(v), 0.5); }
 
-double max_of(const std::vector<double>& v) {
-  return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end());
-}
+double max_of(const std::vector<double>& v) { return summarize(v).max; }
 
 std::vector<std::pair<std::string, SceneTally>> tally_scenes(
     const std::vector<SceneRun>& runs, const std::vector<std::string>& category_order) {
