@@ -1,6 +1,7 @@
-// cloudshape-recognize [--config FILE] [--pretty] [--verbose] FILE...
+// cloudshape-recognize [--config FILE] [--format json|table] [--pretty] [--verbose] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
-// file on stdout (JSON Lines; INTERFACE.md). stdout carries nothing else: logs go to stderr.
+// file on stdout (JSON Lines; INTERFACE.md), or with --format table a header and one aligned
+// line per object for a person. stdout carries nothing else: logs go to stderr.
 //
 // Exit status: 0 when every file was read and recognised; 2 when a file could not be read or
 // held no usable point (one "cloudshape-recognize: <file>: <problem>" line on stderr each, the
@@ -23,6 +24,7 @@
 #include "io/read_error.hpp"
 #include "pipeline/recognize.hpp"
 #include "report/result_json.hpp"
+#include "report/result_table.hpp"
 
 namespace {
 
@@ -66,12 +68,17 @@ int main(int argc, char** argv) {
       "prints one JSON line per file: shape, dimensions, 6-DoF pose, confidence.",
       kTool};
   std::string config_path;
+  std::string format = "json";
   bool pretty = false;
   bool verbose = false;
   std::vector<std::string> files;
   app.add_option("--config", config_path,
                  "pipeline configuration (YAML); default: config/pipeline.yaml of the sources, "
                  "else built-in defaults");
+  app.add_option("--format", format,
+                 "json: one JSON object per file (the contract, default); table: one line per "
+                 "object for a person (file, shape, dimensions, confidence, partial, ms)")
+      ->check(CLI::IsMember({"json", "table"}));
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
   app.add_option("files", files, "point-cloud files")->required();
@@ -83,6 +90,13 @@ int main(int argc, char** argv) {
   }
 
   set_up_logging(verbose);
+  const bool table = format == "table";
+  cs::report::TableLayout layout;
+  if (table) {
+    std::vector<std::string> sources;
+    for (const auto& f : files) sources.push_back(std::filesystem::path(f).filename().string());
+    layout = cs::report::table_layout(sources);
+  }
 
   cs::config::PipelineConfig cfg;
   if (config_path.empty()) config_path = cs::config::default_pipeline_config_path();
@@ -102,6 +116,7 @@ int main(int argc, char** argv) {
   const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
                                   static_cast<std::size_t>(cfg.input.max_bytes)};
   int status = 0;
+  if (table) std::cout << cs::report::table_header(layout) << '\n';
   for (const std::string& path : files) {
     cs::io::CloudFile cloud;
     try {
@@ -143,10 +158,14 @@ int main(int argc, char** argv) {
     try {
       const cs::pipeline::RecognitionResult result =
           cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, source);
-      std::cout << (pretty ? cs::report::result_to_json_pretty(result)
-                           : cs::report::result_to_json_line(result))
-                << '\n'
-                << std::flush;
+      if (table) {
+        for (const std::string& row : cs::report::table_rows(result, layout)) std::cout << row << '\n';
+      } else {
+        std::cout << (pretty ? cs::report::result_to_json_pretty(result)
+                             : cs::report::result_to_json_line(result))
+                  << '\n';
+      }
+      std::cout << std::flush;
     } catch (const std::exception& e) {
       report_failure(path + ": recognition failed: " + e.what());
       if (status == 0) status = kExitInternal;
