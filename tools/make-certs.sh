@@ -47,7 +47,7 @@ declare -A subscribes=(
   [cloudshape-keypoints]="cloudshape_planes"
   [cloudshape-classifier]="cloudshape_keypoints"
   [cloudshape-solver]="cloudshape_classified"
-  [cloudshape-inject]="cloudshape_result"  # it waits for each cloud's result (README "No lost clouds")
+  [cloudshape-inject]="cloudshape_result"  # it waits for each cloud's result (docs/reliability.md)
   [cloudshape-echo]="cloudshape_result cloudshape_status"
 )
 participants=(cloudshape-ingest cloudshape-planes cloudshape-keypoints cloudshape-classifier

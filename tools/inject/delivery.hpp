@@ -1,5 +1,6 @@
 // cloudshape-inject's clouds on their way: publishes each on the raw-cloud topic and, until
-// its result came back, sends it again whenever that result is overdue (README "No lost clouds").
+// its result came back, sends it again whenever that result is overdue (docs/reliability.md
+// "No lost clouds").
 #pragma once
 
 #include <atomic>

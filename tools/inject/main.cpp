@@ -1,7 +1,8 @@
 // cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--resend-after S] FILE_OR_DIR...
 // Reads clouds with io::read_cloud and publishes each on the raw-cloud topic (an organized one with
 // its pixels), once a subscriber (the ingest service) is there, then waits for each cloud's result
-// and sends again the clouds whose result is overdue (README "No lost clouds"). Reports on stderr.
+// and sends again the clouds whose result is overdue (docs/reliability.md "No lost clouds").
+// Reports on stderr.
 // Exit: 0, 2 if a file was bad, 1 if no subscriber or a cloud got no result.
 #include <CLI/CLI.hpp>
 #include <algorithm>

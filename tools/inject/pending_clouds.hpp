@@ -1,5 +1,5 @@
 // The clouds cloudshape-inject sent whose complete result it has not seen yet: an overdue
-// cloud is sent again, so none is lost (README "No lost clouds").
+// cloud is sent again, so none is lost (docs/reliability.md "No lost clouds").
 #pragma once
 
 #include <chrono>
