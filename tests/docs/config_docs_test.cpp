@@ -88,7 +88,8 @@ TEST(ConfigurationDocs, KeyTableMatchesTheLoadersSchema) {
       const auto it = documented.find(name);
       if (it == documented.end()) {
         ADD_FAILURE() << "configuration key " << name << " is not in docs/configuration.md: add "
-                      << "a row | `" << name << "` | " << type_text<T>() << " | default | meaning |";
+                      << "a row | `" << name << "` | " << type_text<T>()
+                      << " | `default` | unit | meaning |";
         return;
       }
       EXPECT_EQ(it->second.type, type_text<T>())
