@@ -3,7 +3,11 @@
 # drift from the tools. Every ```sh block must carry a marker on the line before its fence:
 #
 #   <!-- doc-test: run -->            runs offline in seconds: executed here, must exit 0
-#   <!-- doc-test: skip REASON -->    not run here, with the reason (DDS, long, root, ...)
+#   <!-- doc-test: run netns -->      the same inside a private network and PID namespace (DDS
+#                                     commands: their traffic and domain meet nobody else's, and
+#                                     every process they start dies with the block); needs root,
+#                                     skipped with that reason without it
+#   <!-- doc-test: skip REASON -->    not run here, with the reason (long, builds, synopsis, ...)
 #
 # An unmarked ```sh block fails the test, so a new command is either run or its skip stated.
 # Blocks run in the order they appear, each with bash -euo pipefail, in a scratch copy of the
@@ -41,7 +45,7 @@ split_blocks() {
     !in_sh && /^```(sh|bash)[[:space:]]*$/ {
       n++
       mark = "unmarked"
-      if (prev ~ /^<!-- doc-test: (run|skip [^>]+) -->$/) {
+      if (prev ~ /^<!-- doc-test: (run|run netns|skip [^>]+) -->$/) {
         mark = prev
         sub(/^<!-- doc-test: /, "", mark)
         sub(/ -->$/, "", mark)
@@ -57,6 +61,10 @@ split_blocks() {
     { prev = $0 }
   ' "$1"
 }
+
+# Whether this process may make network and PID namespaces (root, unshare and ip present).
+netns_ok=0
+if unshare --net --pid --fork --mount-proc sh -c 'ip link set lo up' 2>/dev/null; then netns_ok=1; fi
 
 ran=0 skipped=0 failures=0
 shopt -s nullglob
@@ -91,10 +99,21 @@ for doc in "$repo/README.md" "$repo"/docs/*.md; do
       fi
       continue
     fi
+    runner=(bash -euo pipefail)
+    if [[ "$mark" == "run netns" ]]; then
+      if ((netns_ok == 0)); then
+        echo "skip $where: needs a private network namespace (root, unshare), not available here"
+        skipped=$((skipped + 1))
+        continue
+      fi
+      # shellcheck disable=SC2016  # $0 is for the inner shell
+      runner=(unshare --net --pid --fork --mount-proc
+              bash -c 'ip link set lo up && exec bash -euo pipefail "$0"')
+    fi
     [[ -n "$ws" ]] || ws="$(make_workspace "$name")"
     start=$SECONDS
     status=0
-    (cd "$ws" && timeout "$block_timeout" bash -euo pipefail "$script") >"$base.out" 2>&1 || status=$?
+    (cd "$ws" && timeout "$block_timeout" "${runner[@]}" "$script") >"$base.out" 2>&1 || status=$?
     if ((status == 0)); then
       echo "ok   $where ($((SECONDS - start)) s): $(grep -m1 -v '^#' "$script")"
       ran=$((ran + 1))
