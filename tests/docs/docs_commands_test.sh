@@ -113,7 +113,10 @@ for doc in "$repo/README.md" "$repo"/docs/*.md; do
     [[ -n "$ws" ]] || ws="$(make_workspace "$name")"
     start=$SECONDS
     status=0
-    (cd "$ws" && timeout "$block_timeout" "${runner[@]}" "$script") >"$base.out" 2>&1 || status=$?
+    # Service logs and pid files in the scratch folder, never in the shared build/logs: pids from
+    # a PID namespace mean other processes outside it, where a later launch.sh stop would look.
+    (cd "$ws" && CLOUDSHAPE_LOG_DIR="$ws/../logs" timeout "$block_timeout" "${runner[@]}" "$script") \
+      >"$base.out" 2>&1 || status=$?
     if ((status == 0)); then
       echo "ok   $where ($((SECONDS - start)) s): $(grep -m1 -v '^#' "$script")"
       ran=$((ran + 1))
