@@ -8,7 +8,7 @@
 namespace cloudshape::report {
 namespace {
 
-constexpr int kShapeWidth = 16;  // "pentagonal_prism"
+constexpr int kShapeWidth = 16;       // "pentagonal_prism"
 constexpr int kDimensionsWidth = 44;  // three dimensions of 4 significant digits below 1
 
 // Four significant digits in plain notation for the lengths a sensor gives (a golf ball in
@@ -34,9 +34,10 @@ std::string row(const TableLayout& layout, const std::string& file, const std::s
                 const std::string& dimensions, const std::string& confidence,
                 const std::string& partial, const std::string& ms, const std::string& note) {
   char buf[1024];
-  std::snprintf(buf, sizeof buf, "%-*s  %-*s  %-*s  %10s  %7s  %8s", static_cast<int>(layout.file_width),
-                file.c_str(), kShapeWidth, shape.c_str(), kDimensionsWidth, dimensions.c_str(),
-                confidence.c_str(), partial.c_str(), ms.c_str());
+  std::snprintf(buf, sizeof buf, "%-*s  %-*s  %-*s  %10s  %7s  %8s",
+                static_cast<int>(layout.file_width), file.c_str(), kShapeWidth, shape.c_str(),
+                kDimensionsWidth, dimensions.c_str(), confidence.c_str(), partial.c_str(),
+                ms.c_str());
   std::string line = buf;
   if (!note.empty()) line += "  " + note;
   // Padding of the last columns is not needed when nothing follows them.

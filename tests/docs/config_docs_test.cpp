@@ -129,8 +129,8 @@ TEST(ConfigurationDocs, ProfileTableNamesEveryQosProfile) {
   const std::string xml((std::istreambuf_iterator<char>(in)), {});
   std::set<std::string> profiles;
   const std::regex profile(R"re(<(participant|data_writer|data_reader) profile_name="([^"]+)")re");
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), profile); it != std::sregex_iterator();
-       ++it)
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), profile);
+       it != std::sregex_iterator(); ++it)
     profiles.insert((*it)[2].str() + " " + (*it)[1].str());
   ASSERT_FALSE(profiles.empty());
 
@@ -145,8 +145,8 @@ TEST(ConfigurationDocs, ProfileTableNamesEveryQosProfile) {
       documented.insert(spans[0] + " " + cells[1]);
   }
   for (const auto& p : profiles)
-    EXPECT_TRUE(documented.count(p)) << "config/qos.xml profile '" << p
-                                     << "' has no row in docs/configuration.md";
+    EXPECT_TRUE(documented.count(p))
+        << "config/qos.xml profile '" << p << "' has no row in docs/configuration.md";
   for (const auto& d : documented)
     EXPECT_TRUE(profiles.count(d)) << "docs/configuration.md documents profile '" << d
                                    << "', which config/qos.xml does not define";

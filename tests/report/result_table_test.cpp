@@ -22,7 +22,8 @@ pipeline::RecognitionResult two_objects() {
   pipeline::RecognitionResult r;
   r.source = "scene.pcd";
   r.timings.total_ms = 41.26;
-  r.objects.push_back(object("box", {{"length", 30.0}, {"width", 20.0}, {"height", 10.0}}, 0.971, false));
+  r.objects.push_back(
+      object("box", {{"length", 30.0}, {"width", 20.0}, {"height", 10.0}}, 0.971, false));
   r.objects.push_back(object("sphere", {{"radius", 0.032951}}, 0.5, true));
   return r;
 }

@@ -159,7 +159,8 @@ int main(int argc, char** argv) {
       const cs::pipeline::RecognitionResult result =
           cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, source);
       if (table) {
-        for (const std::string& row : cs::report::table_rows(result, layout)) std::cout << row << '\n';
+        for (const std::string& row : cs::report::table_rows(result, layout))
+          std::cout << row << '\n';
       } else {
         std::cout << (pretty ? cs::report::result_to_json_pretty(result)
                              : cs::report::result_to_json_line(result))
