@@ -1,7 +1,8 @@
 // docs/recognizer.md repeats part of ../shared/INTERFACE.md (the outside contract) for the
 // reader's convenience; where both state a shape's dimension keys or where its pose.center lies
-// they must agree, and the keys must be what the code writes (report::dimension_names). INTERFACE.md may name shapes
-// the code does not produce yet ("being added"); recognizer.md documents what the code does.
+// they must agree, and the keys must be what the code writes (report::dimension_names).
+// INTERFACE.md may name shapes the code does not produce yet ("being added"); recognizer.md
+// documents what the code does.
 #include <gtest/gtest.h>
 
 #include <cctype>
