@@ -23,11 +23,11 @@ Eigen::Matrix3d frame(const Eigen::Vector3d& right, const Eigen::Vector3d& down,
 
 Camera sensor_camera() { return Camera{Eigen::Matrix3d::Identity(), Eigen::Vector3d::Zero(), true}; }
 
-Camera principal_axes_camera(const std::vector<Eigen::Vector3d>& points) {
+Camera principal_axes_camera(const std::vector<Eigen::Vector3d>& points, const Eigen::Vector3d& viewer_side) {
   const geometry::Pca pca = geometry::compute_pca(points);
   Eigen::Vector3d forward = pca.eigenvectors.col(0);
   Eigen::Vector3d right = pca.eigenvectors.col(2);
-  if (forward.dot(pca.centroid) < 0.0) forward = -forward;
+  if (forward.dot(pca.centroid - viewer_side) < 0.0) forward = -forward;
   Eigen::Vector3d down = forward.cross(right);
   // Like a depth camera's y, down leans towards +y where it can (a half-turn keeps it a rotation).
   if (down.y() < 0.0) {

@@ -1,6 +1,7 @@
 #include "render/picture_plan.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/cameras.hpp"
 
@@ -49,6 +50,32 @@ Eigen::Vector3d median(std::vector<Eigen::Vector3d> points) {
   return out;
 }
 
+// Where the sensor most likely was, for a cloud with no sensor pose: a sensor sees the near side
+// of a solid, so the seen points sit between it and the solid's centre; with no solid to tell
+// (or no clear offset), the origin, where a sensor's own frame puts it.
+Eigen::Vector3d viewer_side(const PointList& points, const pipeline::RecognitionResult& result,
+                            const std::vector<Eigen::Vector3d>& sample) {
+  Eigen::Vector3d toward = Eigen::Vector3d::Zero();
+  for (const pipeline::ObjectResult& o : result.objects) {
+    if (o.shape == "unknown" || o.point_indices.empty()) continue;
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    std::size_t n = 0;
+    for (std::uint32_t i : o.point_indices)
+      if (i < points.size()) {
+        mean += points[i];
+        ++n;
+      }
+    if (n > 0) toward += mean / static_cast<double>(n) - o.center;
+  }
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& p : sample) centroid += p / static_cast<double>(sample.size());
+  double spread = 0.0;
+  for (const Eigen::Vector3d& p : sample) spread += (p - centroid).squaredNorm() / static_cast<double>(sample.size());
+  spread = std::sqrt(spread);
+  if (!(toward.norm() > 0.02 * spread)) return Eigen::Vector3d::Zero();
+  return centroid + 10.0 * spread * toward.normalized();
+}
+
 Panel make_panel(std::string caption, const Camera& camera, const PixelRect& rect,
                  const std::vector<Eigen::Vector3d>& frame_points, double zoom_out,
                  const pipeline::RecognitionResult& result) {
@@ -87,7 +114,7 @@ PicturePlan plan_picture(const PointList& points, const GridLayout& grid,
   if (objects.empty()) objects = all;
 
   const bool organized = grid.organized();
-  const Camera first = organized ? sensor_camera() : principal_axes_camera(all);
+  const Camera first = organized ? sensor_camera() : principal_axes_camera(all, viewer_side(points, result, all));
   plan.panels.push_back(make_panel(organized ? "sensor view: camera at the origin, looking along +z"
                                              : "principal-axes view: along the cloud's thinnest axis",
                                    first, left, objects, kFirstZoomOut, result));

@@ -37,7 +37,8 @@ struct PicturePlan {
 inline constexpr double kLegendRowHeight = 20.0;
 
 // An organized cloud (a depth camera's grid) is first seen from its sensor: the camera at the
-// origin looking along +z. Any other cloud is seen along its principal axes (cameras.hpp).
+// origin looking along +z. Any other cloud is seen along its principal axes (cameras.hpp), from
+// the side its solids were seen from (the seen points lie between the sensor and each solid's centre).
 // The second panel looks at the objects' points from 40 degrees right and 30 degrees above.
 PicturePlan plan_picture(const PointList& points, const GridLayout& grid,
                          const pipeline::RecognitionResult& result, const RenderOptions& options = {});

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "render/hidden_lines.hpp"
 #include "render/label.hpp"
 #include "render/palette.hpp"
 #include "render/point_splat.hpp"
@@ -20,10 +21,12 @@ struct Stroke {
   Rgb colour;
   double alpha;
   double width;
+  bool dashed = false;
 };
 // A dark halo under each wire keeps it visible over points of any colour.
 constexpr Stroke kHaloStroke{kWireHalo, 0.75, 5.0};
 constexpr Stroke kWireStroke{kWire, 1.0, 2.4};
+constexpr Stroke kHiddenStroke{kWire, 0.7, 1.4, true};
 constexpr double kLabelSize = 13.0;
 constexpr double kLabelPad = 4.0;
 constexpr const char* kFont = "DejaVu Sans";
@@ -41,28 +44,29 @@ void clip_to(cairo_t* cr, const PixelRect& r) {
   cairo_clip(cr);
 }
 
-void trace_wireframe(cairo_t* cr, const View& view, const Wireframe& wireframe) {
-  for (const Polyline& line : wireframe.lines) {
-    const std::size_t n = line.points.size();
-    const std::size_t segments = line.closed ? n : (n > 0 ? n - 1 : 0);
-    for (std::size_t k = 0; k < segments; ++k) {
-      const auto s = view.segment(line.points[k], line.points[(k + 1) % n]);
-      if (!s) continue;
-      cairo_move_to(cr, s->first.x(), s->first.y());
-      cairo_line_to(cr, s->second.x(), s->second.y());
-    }
+// Hidden pieces first, thin and faint; then a dark halo under every visible piece, so that no
+// solid's outline cuts through another's wire; then the visible wires.
+void draw_wireframes(cairo_t* cr, const Panel& panel, const DepthBuffer& depth) {
+  std::vector<WirePiece> pieces;
+  for (const Wireframe& w : panel.wireframes) {
+    const std::vector<WirePiece> more = wire_pieces(panel.view, w, depth);
+    pieces.insert(pieces.end(), more.begin(), more.end());
   }
-}
-
-void draw_wireframes(cairo_t* cr, const Panel& panel) {
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-  // Every halo first, so that no solid's dark outline cuts through another's wire.
-  for (const Stroke& stroke : {kHaloStroke, kWireStroke}) {
-    for (const Wireframe& w : panel.wireframes) trace_wireframe(cr, panel.view, w);
+  for (const auto& [stroke, hidden] : {std::pair{kHiddenStroke, true}, std::pair{kHaloStroke, false},
+                                       std::pair{kWireStroke, false}}) {
+    for (const WirePiece& p : pieces) {
+      if (p.hidden != hidden) continue;
+      cairo_move_to(cr, p.from.x(), p.from.y());
+      cairo_line_to(cr, p.to.x(), p.to.y());
+    }
     set_colour(cr, stroke.colour, stroke.alpha);
     cairo_set_line_width(cr, stroke.width);
+    const double dash[] = {5.0, 4.0};
+    cairo_set_dash(cr, dash, stroke.dashed ? 2 : 0, 0.0);
     cairo_stroke(cr);
   }
+  cairo_set_dash(cr, nullptr, 0, 0.0);
 }
 
 // Where a label points: the top of the solid's drawing, else of its points.
@@ -179,10 +183,10 @@ void draw_panel(cairo_t* cr, cairo_surface_t* surface, const Panel& panel, const
   PixelBuffer buffer{reinterpret_cast<std::uint32_t*>(cairo_image_surface_get_data(surface)),
                      cairo_image_surface_get_stride(surface) / 4, cairo_image_surface_get_width(surface),
                      cairo_image_surface_get_height(surface)};
-  splat_points(panel.view, panel.rect, points, object_of, buffer);
+  const DepthBuffer depth = splat_points(panel.view, panel.rect, points, object_of, buffer);
   cairo_surface_mark_dirty(surface);
   clip_to(cr, panel.rect);
-  draw_wireframes(cr, panel);
+  draw_wireframes(cr, panel, depth);
   draw_tags(cr, panel, result, points);
   // The caption on a strip of canvas, so that points never run through it.
   const double strip = 26.0;

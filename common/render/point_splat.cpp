@@ -38,7 +38,7 @@ std::uint32_t shaded(Rgb c, double brightness) {
 int splat_size(const std::vector<Projected>& seen, int x0, int y0, int x1, int y1) {
   constexpr int kCell = 16;
   constexpr int kLargest = 6;
-  constexpr double kLayers = 1.5;
+  constexpr double kLayers = 1.8;
   const int w = x1 - x0, columns = (w + kCell - 1) / kCell, rows = (y1 - y0 + kCell - 1) / kCell;
   std::vector<std::uint8_t> hit(static_cast<std::size_t>(w) * (y1 - y0), 0);
   std::vector<int> counts(static_cast<std::size_t>(columns) * rows, 0);
@@ -65,13 +65,20 @@ std::vector<int> object_of_points(const pipeline::RecognitionResult& result, std
   return out;
 }
 
-void splat_points(const View& view, const PixelRect& clip, const PointList& points,
-                  const std::vector<int>& object_of, PixelBuffer out) {
+float DepthBuffer::at(int x, int y) const {
+  if (x < x0 || y < y0 || x >= x0 + width || y >= y0 + height) return std::numeric_limits<float>::infinity();
+  return depth[static_cast<std::size_t>(y - y0) * width + (x - x0)];
+}
+
+DepthBuffer splat_points(const View& view, const PixelRect& clip, const PointList& points,
+                         const std::vector<int>& object_of, PixelBuffer out) {
   const int x0 = std::max(0, static_cast<int>(std::ceil(clip.x)));
   const int y0 = std::max(0, static_cast<int>(std::ceil(clip.y)));
-  const int x1 = std::min(out.width, static_cast<int>(std::floor(clip.x + clip.width)));
-  const int y1 = std::min(out.height, static_cast<int>(std::floor(clip.y + clip.height)));
-  if (x1 <= x0 || y1 <= y0) return;
+  const int x1 = std::max(x0, std::min(out.width, static_cast<int>(std::floor(clip.x + clip.width))));
+  const int y1 = std::max(y0, std::min(out.height, static_cast<int>(std::floor(clip.y + clip.height))));
+  const int w = x1 - x0, h = y1 - y0;
+  DepthBuffer zbuffer{x0, y0, w, h,
+                      std::vector<float>(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity())};
 
   std::vector<Projected> seen;
   seen.reserve(points.size());
@@ -81,7 +88,7 @@ void splat_points(const View& view, const PixelRect& clip, const PointList& poin
     seen.push_back({static_cast<int>(p->x()), static_cast<int>(p->y()), static_cast<float>(p->z()),
                     static_cast<std::uint32_t>(i)});
   }
-  if (seen.empty()) return;
+  if (seen.empty()) return zbuffer;
 
   std::vector<float> depths;
   depths.reserve(seen.size());
@@ -89,9 +96,8 @@ void splat_points(const View& view, const PixelRect& clip, const PointList& poin
   const int size = splat_size(seen, x0, y0, x1, y1);
   const double near = percentile(depths, 0.02), far = percentile(depths, 0.98);
   const double span = far > near ? far - near : 1.0;
-
-  const int w = x1 - x0, h = y1 - y0;
-  std::vector<float> zbuffer(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity());
+  zbuffer.near = near;
+  zbuffer.far = far;
   for (const Projected& p : seen) {
     const double t = std::clamp((p.depth - near) / span, 0.0, 1.0);
     const double shade = std::floor(t * (kShades - 1) + 0.5) / (kShades - 1);
@@ -101,13 +107,14 @@ void splat_points(const View& view, const PixelRect& clip, const PointList& poin
     const int left = p.x - size / 2, top = p.y - size / 2;
     for (int y = std::max(y0, top); y < std::min(y1, top + size); ++y) {
       for (int x = std::max(x0, left); x < std::min(x1, left + size); ++x) {
-        float& z = zbuffer[static_cast<std::size_t>(y - y0) * w + (x - x0)];
+        float& z = zbuffer.depth[static_cast<std::size_t>(y - y0) * w + (x - x0)];
         if (p.depth >= z) continue;
         z = p.depth;
         out.pixels[static_cast<std::size_t>(y) * out.stride + x] = colour;
       }
     }
   }
+  return zbuffer;
 }
 
 }  // namespace cloudshape::render

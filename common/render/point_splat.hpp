@@ -21,12 +21,22 @@ struct PixelBuffer {
   int height = 0;
 };
 
+// What the drawn points leave in front: per pixel of the clip, the nearest point's depth along
+// the camera's forward axis (infinity where no point was drawn).
+struct DepthBuffer {
+  int x0 = 0, y0 = 0, width = 0, height = 0;
+  std::vector<float> depth;
+  double near = 0.0, far = 0.0;  // the points' 2nd and 98th percentile of depth
+
+  float at(int x, int y) const;  // infinity outside the clip
+};
+
 // Per point of the recognised cloud, the index of the object it went into, or -1.
 std::vector<int> object_of_points(const pipeline::RecognitionResult& result, std::size_t points);
 
 // Draws the points that `view` puts inside `clip`. Squares are 1 to 6 pixels wide, as wide as
 // the points' typical spacing, so that a surface reads as a surface.
-void splat_points(const View& view, const PixelRect& clip, const PointList& points,
-                  const std::vector<int>& object_of, PixelBuffer out);
+DepthBuffer splat_points(const View& view, const PixelRect& clip, const PointList& points,
+                         const std::vector<int>& object_of, PixelBuffer out);
 
 }  // namespace cloudshape::render

@@ -11,7 +11,8 @@ namespace cloudshape::render {
 
 struct Polyline {
   std::vector<Eigen::Vector3d> points;
-  bool closed = false;  // the last point joins the first
+  bool closed = false;   // the last point joins the first
+  bool outline = false;  // the solid's silhouette from this view: never behind its own surface
 };
 
 struct Wireframe {

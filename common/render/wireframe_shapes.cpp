@@ -88,6 +88,7 @@ Wireframe round_solid(const Eigen::Vector3d& base, const Eigen::Matrix3d& axes, 
   for (double t : angles) {
     const Eigen::Vector3d radial = std::cos(t) * u + std::sin(t) * v;
     out.lines.push_back(segment(base + radius * radial, top + top_radius * radial));
+    out.lines.back().outline = angles.size() == 2;
   }
   return out;
 }
@@ -149,6 +150,7 @@ Wireframe sphere_wireframe(const pipeline::ObjectResult& o, const Eigen::Vector3
   const Eigen::Vector3d v = d.cross(u);
   Wireframe out;
   out.lines.push_back(circle(o.center, u, v, r));
+  out.lines.back().outline = true;
   const double tilt = kPi / 6.0;
   out.lines.push_back(circle(o.center, u, std::cos(tilt) * d + std::sin(tilt) * v, r));
   out.lines.push_back(circle(o.center, v, std::cos(tilt) * d - std::sin(tilt) * u, r));

@@ -1,5 +1,5 @@
-// The PNG as drawn: its size, the wireframe's pixels where the plan projects the solid, the
-// points' colours, and a clear error for a picture that cannot be written.
+// The PNG as drawn: its size, the wireframe's pixels where the plan projects the solid (faint
+// where points hide it), the points' colours, and a clear error for a picture that cannot be written.
 #include <cairo.h>
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -197,23 +197,42 @@ TEST_P(PicturePng, DrawsTheBoxEdgesWhereThePlanProjectsThem) {
   const PicturePlan plan = plan_picture(points, grid, result);
   ASSERT_EQ(plan.panels.size(), 2u);
   EXPECT_EQ(plan.panels[0].caption.rfind(GetParam() ? "sensor view" : "principal-axes view", 0), 0u);
-  const std::array<std::array<int, 6>, 12> edges = {{{-1, -1, -1, 1, -1, -1}, {-1, 1, -1, 1, 1, -1},
-                                                     {-1, -1, 1, 1, -1, 1},   {-1, 1, 1, 1, 1, 1},
-                                                     {-1, -1, -1, -1, 1, -1}, {1, -1, -1, 1, 1, -1},
-                                                     {-1, -1, 1, -1, 1, 1},   {1, -1, 1, 1, 1, 1},
-                                                     {-1, -1, -1, -1, -1, 1}, {1, -1, -1, 1, -1, 1},
-                                                     {-1, 1, -1, -1, 1, 1},   {1, 1, -1, 1, 1, 1}}};
   for (const Panel& panel : plan.panels) {
-    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> drawn;
-    for (const auto& e : edges) {
-      const Eigen::Vector3d a = box.corner(e[0], e[1], e[2]), b = box.corner(e[3], e[4], e[5]);
-      const auto s = panel.view.segment(a, b);
-      ASSERT_TRUE(s.has_value());
-      drawn.push_back(*s);
-      // A tag may cover a little of an edge, never a whole quarter of it.
-      bool seen = false;
-      for (double t : {0.25, 0.5, 0.75}) seen = seen || colour_near(image.get(), (1 - t) * s->first + t * s->second, kWire);
-      EXPECT_TRUE(seen) << panel.caption << ": edge " << a.transpose() << " -> " << b.transpose();
+    // Each edge runs along axis i at signs (sj, sk) of the other two: between the faces (j, sj)
+    // and (k, sk). With every face sampled, an edge whose two faces both turn away from the
+    // camera lies behind points and is drawn faint; any other is drawn in the wire's colour.
+    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> drawn, visible;
+    std::vector<Eigen::Vector2d> hidden_middles;
+    for (int i = 0; i < 3; ++i)
+      for (int sj : {-1, 1})
+        for (int sk : {-1, 1}) {
+          const int j = (i + 1) % 3, k = (i + 2) % 3;
+          std::array<int, 3> lo{}, hi{};
+          lo[i] = -1, hi[i] = 1, lo[j] = hi[j] = sj, lo[k] = hi[k] = sk;
+          const Eigen::Vector3d a = box.corner(lo[0], lo[1], lo[2]), b = box.corner(hi[0], hi[1], hi[2]);
+          const auto s = panel.view.segment(a, b);
+          ASSERT_TRUE(s.has_value());
+          drawn.push_back(*s);
+          const auto faces_camera = [&](int axis, int sign) {
+            const Eigen::Vector3d normal = sign * box.axes.row(axis).transpose();
+            const Eigen::Vector3d face = box.center + 0.5 * box.size[axis] * normal;
+            return normal.dot(panel.view.camera.toward_viewer(face)) > 0.0;
+          };
+          if (!faces_camera(j, sj) && !faces_camera(k, sk)) {
+            hidden_middles.push_back(0.5 * (s->first + s->second));
+            continue;
+          }
+          visible.push_back(*s);
+          // A tag may cover a little of an edge, never a whole quarter of it.
+          bool seen = false;
+          for (double t : {0.25, 0.5, 0.75}) seen = seen || colour_near(image.get(), (1 - t) * s->first + t * s->second, kWire);
+          EXPECT_TRUE(seen) << panel.caption << ": edge " << a.transpose() << " -> " << b.transpose();
+        }
+    EXPECT_GE(hidden_middles.size(), 1u) << panel.caption;
+    for (const Eigen::Vector2d& m : hidden_middles) {
+      double nearest = 1e9;
+      for (const auto& [a, b] : visible) nearest = std::min(nearest, distance_to_segment(m, a, b));
+      if (nearest > 5.0) EXPECT_FALSE(colour_near(image.get(), m, kWire)) << panel.caption << ": hidden edge at " << m.transpose();
     }
     // A pixel on the face most turned to the camera, far from every drawn edge (hidden ones
     // cross faces too): the first object's colour there, shaded by depth, not the wire.

@@ -85,12 +85,14 @@ TEST(Cameras, PrincipalAxesCameraLooksAcrossAFlatCloudFromTheOriginsSide) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   std::vector<Eigen::Vector3d> points;
   for (int i = 0; i < 2000; ++i) points.emplace_back(3.0 * u(rng), 1.0 * u(rng), -5.0 + 0.01 * u(rng));
-  const Camera c = principal_axes_camera(points);
+  const Camera c = principal_axes_camera(points, Eigen::Vector3d::Zero());
+  const Camera from_below = principal_axes_camera(points, Eigen::Vector3d(0.0, 0.0, -50.0));
   EXPECT_FALSE(c.perspective);
   const Eigen::Vector3d right = c.rotation.row(0).transpose(), forward = c.rotation.row(2).transpose();
   EXPECT_GT(std::abs(right.x()), 0.99);     // the longest spread across the picture
   EXPECT_NEAR(forward.z(), -1.0, 1e-3);      // the cloud is at z = -5: seen from the origin's side
   EXPECT_NEAR(c.rotation.determinant(), 1.0, kTol);
+  EXPECT_NEAR(from_below.rotation(2, 2), 1.0, 1e-3);  // seen from the other side when asked
 }
 
 }  // namespace
