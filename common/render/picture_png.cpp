@@ -171,7 +171,7 @@ void draw_header(cairo_t* cr, const PicturePlan& plan, const pipeline::Recogniti
                               (result.objects.size() == 1 ? " object" : " objects");
   draw_text(cr, result.source.empty() ? std::string("(unnamed cloud)") : result.source, 12, 26, 17,
             kText, CAIRO_FONT_WEIGHT_BOLD);
-  const std::string facts = std::to_string(points) + " points, " + objects;
+  const std::string facts = std::to_string(points) + (points == 1 ? " point, " : " points, ") + objects;
   cairo_text_extents_t ext;
   cairo_text_extents(cr, facts.c_str(), &ext);
   draw_text(cr, facts, plan.width - ext.x_advance - 12, 26, 14, kCaption);

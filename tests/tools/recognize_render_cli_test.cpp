@@ -85,6 +85,19 @@ TEST_F(RecognizeRenderCli, WritesOnePictureOfTheRightSizePerFile) {
   EXPECT_EQ(std::distance(fs::directory_iterator(out), fs::directory_iterator{}), 3);
 }
 
+TEST_F(RecognizeRenderCli, CloudsWithNoSolidStillGetAPicture) {
+  const fs::path one = dir_ / "one_point.xyz", same = dir_ / "same_point.xyz";
+  std::ofstream(one) << "1 2 3\n";
+  std::ofstream f(same);
+  for (int i = 0; i < 500; ++i) f << "4 5 6\n";
+  f.close();
+  const fs::path out = dir_ / "pictures";
+  const ProcessResult r = run_process({kBin, "--render", out.string(), one.string(), same.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(png_size(out / "one_point.png").width, 1200u);
+  EXPECT_EQ(png_size(out / "same_point.png").height, 800u);
+}
+
 TEST_F(RecognizeRenderCli, AFolderThatIsAFileIsOneClearErrorBeforeAnyInput) {
   const fs::path file = dir_ / "a" / "box.xyz";
   const ProcessResult r = run_process({kBin, "--render", file.string(), file.string()});
