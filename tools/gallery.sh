@@ -7,7 +7,7 @@
 # Pictures: single views of three YCB scans (a box, a can, a ball) and of the ravens pentagonal
 # prism, made with `cloudshape-synth mesh --view` (20000 points, seed 12, the first camera of
 # tools/real-views.sh: (0.5,0.3,0.4) m, and the same times 100 for the prism in mm; 0.5 mm noise
-# on the YCB views); two mOSD Kinect scenes and PCL's milk carton as they are; the SphereCalib
+# on the YCB views); three mOSD Kinect scenes and PCL's milk carton as they are; the SphereCalib
 # lidar scan as it is. Each PNG is reduced to a palette with pngquant to stay under 150 KB.
 # Environment: CLOUDSHAPE_BUILD_DIR, CLOUDSHAPE_JOBS, CLOUDSHAPE_REAL_DATA (default
 # ../shared/data/real beside the repository).
@@ -46,7 +46,8 @@ for mesh in 003_cracker_box 005_tomato_soup_can 055_baseball; do
   single_view "$real/ycb/${mesh}_google16k.obj" 0.5,0.3,0.4 0.0005 "ycb_${mesh}_view"
 done
 single_view "$real/ravens/kitting_07_pentagonal_prism.obj" 50,30,40 0 ravens_pentagonal_prism_view
-clouds+=("$real/mosd_learn/learn33.pcd" "$real/pcl/mOSD_learn0_boxes.pcd" "$real/pcl/milk.pcd"
+clouds+=("$real/mosd_learn/learn33.pcd" "$real/mosd_learn/learn20.pcd" "$real/pcl/mOSD_learn0_boxes.pcd"
+         "$real/pcl/milk.pcd"
          "$real/spherecalib/example3_L1_S1_lidar_sphere.xyz")
 
 cs_log "rendering ${#clouds[@]} clouds"
