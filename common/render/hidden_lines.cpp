@@ -8,6 +8,8 @@ namespace cloudshape::render {
 namespace {
 
 constexpr double kPiecePixels = 3.0;
+// How far around a piece to look for a point in front: wider than the gaps between splats.
+constexpr int kLookAround = 2;
 constexpr double kDepthTolerance = 0.03;
 constexpr double kSizeTolerance = 0.05;
 
@@ -24,8 +26,8 @@ double wireframe_size(const Wireframe& wireframe) {
 float nearest_depth_around(const DepthBuffer& depth, const Eigen::Vector2d& px) {
   const int x = static_cast<int>(std::floor(px.x())), y = static_cast<int>(std::floor(px.y()));
   float nearest = depth.at(x, y);
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) nearest = std::min(nearest, depth.at(x + dx, y + dy));
+  for (int dy = -kLookAround; dy <= kLookAround; ++dy)
+    for (int dx = -kLookAround; dx <= kLookAround; ++dx) nearest = std::min(nearest, depth.at(x + dx, y + dy));
   return nearest;
 }
 

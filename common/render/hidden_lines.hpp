@@ -17,7 +17,7 @@ struct WirePiece {
 };
 
 // Pieces of at most a few pixels are judged, then runs of the same verdict joined. A piece is
-// hidden where the nearest point within a pixel of it is nearer than the piece by more than the
+// hidden where the nearest point within two pixels of it is nearer than the piece by more than the
 // larger of 3% of the points' depth range and 5% of the wireframe's size, so that the surface a
 // wire lies on does not hide it. Outlines (Polyline::outline) are never hidden.
 std::vector<WirePiece> wire_pieces(const View& view, const Wireframe& wireframe, const DepthBuffer& depth);
