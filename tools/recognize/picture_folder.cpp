@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "render/picture_name.hpp"
+
 namespace cloudshape::tools {
 
 PictureFolder::PictureFolder(std::filesystem::path dir) : dir_(std::move(dir)) {
@@ -23,10 +25,7 @@ PictureFolder::PictureFolder(std::filesystem::path dir) : dir_(std::move(dir)) {
 }
 
 std::filesystem::path PictureFolder::path_for(const std::string& source) {
-  std::string stem = std::filesystem::path(source).stem().string();
-  for (char& c : stem)
-    if (c == '/' || c == '\\' || c == ':' || c == '#' || c == '\0') c = '_';
-  if (stem.empty() || stem == "." || stem == "..") stem = "cloud";
+  const std::string stem = render::picture_stem(source);
   std::string name = stem;
   for (int n = 2; taken_.count(name) > 0; ++n) name = stem + "-" + std::to_string(n);
   taken_.insert(name);

@@ -14,8 +14,8 @@ class PictureFolder {
   // a folder or cannot be made or written to.
   explicit PictureFolder(std::filesystem::path dir);
 
-  // DIR/<stem of source>.png (characters a file name cannot hold become '_'), with -2, -3, ...
-  // appended when an earlier cloud of this run took that name.
+  // DIR/<render::picture_stem(source)>.png, with -2, -3, ... appended when an earlier cloud of
+  // this run took that name.
   std::filesystem::path path_for(const std::string& source);
 
  private:
