@@ -88,7 +88,8 @@ fi
 ((${#clouds[@]} > 0)) || cs_die "no sample clouds were made"
 cs_log "recognize (in-process): ${#clouds[@]} clouds, one JSON line each in $results/recognize.jsonl"
 status=0
-"$bin/cloudshape-recognize" "${clouds[@]}" >"$results/recognize.jsonl" || status=$?
+cs_log "pictures: $CLOUDSHAPE_BUILD_DIR/pictures (one PNG per cloud, docs/pictures.md)"
+"$bin/cloudshape-recognize" --render "$CLOUDSHAPE_BUILD_DIR/pictures" "${clouds[@]}" >"$results/recognize.jsonl" || status=$?
 if ((status == 0)); then
   cs_log "done: ${#clouds[@]} clouds recognised"
 else

@@ -1,11 +1,13 @@
-// cloudshape-recognize [--config FILE] [--format json|table] [--pretty] [--verbose] FILE...
+// cloudshape-recognize [--config FILE] [--format json|table] [--pretty] [--verbose] [--render DIR] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
 // file on stdout (JSON Lines; INTERFACE.md), or with --format table a header and one aligned
 // line per object for a person. stdout carries nothing else: logs go to stderr.
+// --render DIR also writes DIR/<file stem>.png per recognised file (docs/pictures.md).
 //
 // Exit status: 0 when every file was read and recognised; 2 when a file could not be read or
 // held no usable point (one "cloudshape-recognize: <file>: <problem>" line on stderr each, the
-// other files still processed), or on a bad command line or configuration file; 1 when the
+// other files still processed), or its picture could not be written (the same one line), or on a
+// bad command line, configuration file or --render folder; 1 when the
 // recognizer itself failed on a readable file (an internal error, also one stderr line).
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <spdlog/spdlog.h>
@@ -15,6 +17,7 @@
 #include <exception>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -22,7 +25,9 @@
 #include "config/pipeline_config.hpp"
 #include "io/cloud_reader.hpp"
 #include "io/read_error.hpp"
+#include "picture_folder.hpp"
 #include "pipeline/recognize.hpp"
+#include "render/picture_png.hpp"
 #include "report/result_json.hpp"
 #include "report/result_table.hpp"
 
@@ -71,6 +76,7 @@ int main(int argc, char** argv) {
   std::string format = "json";
   bool pretty = false;
   bool verbose = false;
+  std::string render_dir;
   std::vector<std::string> files;
   app.add_option("--config", config_path,
                  "pipeline configuration (YAML); default: config/pipeline.yaml of the sources, "
@@ -81,6 +87,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"json", "table"}));
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
+  CLI::Option* render_option = app.add_option("--render", render_dir,
+                 "also write one PNG per file into DIR (created if missing): the points, each "
+                 "solid's wireframe and label, from the sensor's or principal axes' view and an "
+                 "oblique one");
   app.add_option("files", files, "point-cloud files")->required();
   try {
     app.parse(argc, argv);
@@ -106,6 +116,16 @@ int main(int argc, char** argv) {
     try {
       cfg = cs::config::load_pipeline_config(config_path);
       spdlog::debug("configuration: {}", config_path);
+    } catch (const std::exception& e) {
+      report_failure(e.what());
+      return kExitBadInput;
+    }
+  }
+
+  std::optional<cs::tools::PictureFolder> pictures;
+  if (render_option->count() > 0) {
+    try {
+      pictures.emplace(render_dir);
     } catch (const std::exception& e) {
       report_failure(e.what());
       return kExitBadInput;
@@ -167,6 +187,15 @@ int main(int argc, char** argv) {
                   << '\n';
       }
       std::cout << std::flush;
+      if (pictures) {
+        const std::filesystem::path png = pictures->path_for(source);
+        try {
+          cs::render::write_picture_png(cloud.points, cloud.grid, result, png.string());
+        } catch (const std::exception& e) {
+          report_failure(path + ": no picture: " + e.what());
+          status = kExitBadInput;
+        }
+      }
     } catch (const std::exception& e) {
       report_failure(path + ": recognition failed: " + e.what());
       if (status == 0) status = kExitInternal;
