@@ -7,7 +7,7 @@ CLOUDSHAPE_BUILD_PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libnanoflann-dev libyaml-cpp-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
+  liblzf-dev liblz4-dev libzstd-dev zlib1g-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
   libfastrtps-dev libfastcdr-dev fastddsgen
 )
 # The one list tools/test.sh and tools/demo.sh install: the build plus what the default tests
