@@ -13,6 +13,8 @@ namespace cloudshape::fuzz {
 std::string check_pcd_input(std::string_view bytes);
 std::string check_ply_input(std::string_view bytes);  // as a point cloud and as a mesh
 std::string check_xyz_input(std::string_view bytes);
+// An MCAP recording: read, rewritten by McapWriter and read again, its PointCloud2 messages decoded.
+std::string check_mcap_input(std::string_view bytes);
 // `bytes` is a CDR-encoded cloudshape::msg::RawCloud as it arrives on the raw-cloud topic.
 std::string check_raw_cloud_sample(std::string_view bytes);
 
