@@ -42,6 +42,11 @@ McapReadSummary read_mcap_clouds_buffer(std::string_view bytes, const std::strin
                                         const std::set<std::string>& topics, const McapCloudHandlers& handlers,
                                         const ReadLimits& limits = {});
 
+// The PointCloud2 message of that index (as McapCloud::index counts), read again (a replay
+// sending a cloud a second time); ReadError when the file has no such message or it does not
+// decode. Reading stops at that message.
+McapCloud read_mcap_cloud_at(const std::string& path, std::size_t index, const ReadLimits& limits = {});
+
 // Whether a path names a recording (".mcap", any case).
 bool is_mcap_path(const std::string& path);
 

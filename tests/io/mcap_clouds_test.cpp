@@ -192,5 +192,24 @@ TEST(IoMcapClouds, RecognisesTheExtension) {
   EXPECT_FALSE(is_mcap_path("box.pcd"));
 }
 
+
+TEST(IoMcapClouds, ReadsOneMessageAgainByItsIndex) {
+  const test::TempDir dir;
+  const std::string path = dir.file("rec.mcap");
+  {
+    McapWriter writer(path);
+    const auto schema =
+        writer.add_schema(kPointCloud2SchemaName, "ros2msg", std::string(pointcloud2_schema_text()));
+    const auto cam = writer.add_channel(schema, "/points", "cdr");
+    for (std::size_t n : {5, 6, 7}) writer.write(cam, n, n, pointcloud2_to_cdr(cloud_message(sample_points(n), {}, {})));
+  }
+  const McapCloud second = read_mcap_cloud_at(path, 1);
+  EXPECT_EQ(second.index, 1u);
+  EXPECT_EQ(second.cloud.points.size(), 6u);
+  EXPECT_EQ(second.log_time, 6u);
+  expect_read_error([&] { read_mcap_cloud_at(path, 3); }, path, "message 3",
+                    "no such PointCloud2 message (the recording holds 3)");
+}
+
 }  // namespace
 }  // namespace cloudshape::io

@@ -1,6 +1,7 @@
 // cloudshape-recognize [--config FILE] [--pretty] [--verbose] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
-// file on stdout (JSON Lines; INTERFACE.md). stdout carries nothing else: logs go to stderr.
+// file, or per PointCloud2 message of a .mcap recording, on stdout (JSON Lines; INTERFACE.md).
+// stdout carries nothing else: logs go to stderr.
 //
 // Exit status: 0 when every file was read and recognised; 2 when a file could not be read or
 // held no usable point (one "cloudshape-recognize: <file>: <problem>" line on stderr each, the
@@ -12,15 +13,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "config/pipeline_config.hpp"
-#include "io/cloud_reader.hpp"
-#include "io/read_error.hpp"
+#include "cloud_inputs.hpp"
 #include "pipeline/recognize.hpp"
 #include "report/result_json.hpp"
 
@@ -41,13 +40,6 @@ void report_failure(const std::string& text) {
   std::fflush(stderr);
 }
 
-std::string read_error_text(const std::string& path, const cloudshape::io::ReadError& e) {
-  std::string text = path;
-  if (!e.place().empty()) text += ": " + e.place();
-  text += ": " + (e.problem().empty() ? std::string(e.what()) : e.problem());
-  return text;
-}
-
 void set_up_logging(bool verbose) {
   // stdout is reserved for results, so every log line (the pipeline's too) goes to stderr.
   auto logger = spdlog::stderr_color_mt(kTool);
@@ -62,8 +54,9 @@ int main(int argc, char** argv) {
   namespace cs = cloudshape;
 
   CLI::App app{
-      "Recognises the solid shapes in point-cloud files (.pcd, .ply, .xyz, .txt) and "
-      "prints one JSON line per file: shape, dimensions, 6-DoF pose, confidence.",
+      "Recognises the solid shapes in point-cloud files (.pcd, .ply, .xyz, .txt) and recordings "
+      "(.mcap: every sensor_msgs/msg/PointCloud2 message) and prints one JSON line per cloud: "
+      "shape, dimensions, 6-DoF pose, confidence.",
       kTool};
   std::string config_path;
   bool pretty = false;
@@ -74,7 +67,7 @@ int main(int argc, char** argv) {
                  "else built-in defaults");
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
-  app.add_option("files", files, "point-cloud files")->required();
+  app.add_option("files", files, "point-cloud files and MCAP recordings")->required();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -102,55 +95,49 @@ int main(int argc, char** argv) {
   const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
                                   static_cast<std::size_t>(cfg.input.max_bytes)};
   int status = 0;
+  const auto fail = [&](const std::string& text) {
+    report_failure(text);
+    status = kExitBadInput;
+  };
   for (const std::string& path : files) {
-    cs::io::CloudFile cloud;
-    try {
-      cloud = cs::io::read_cloud(path, limits);
-    } catch (const cs::io::ReadError& e) {
-      report_failure(read_error_text(path, e));
-      status = kExitBadInput;
-      continue;
-    } catch (const std::exception& e) {
-      report_failure(path + ": " + e.what());
-      status = kExitBadInput;
-      continue;
-    }
-    if (cloud.points.empty()) {
-      report_failure(path + ": no usable points" +
-                     (cloud.non_finite_dropped > 0
-                          ? " (" + std::to_string(cloud.non_finite_dropped) +
-                                " points read, all with NaN or infinite coordinates)"
-                          : " (the file holds no points)"));
-      status = kExitBadInput;
-      continue;
-    }
-    if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
-        far < cloud.points.size()) {
-      std::ostringstream text;
-      text << path << ": a point at (" << cloud.points[far].transpose()
-           << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
-      report_failure(text.str());
-      status = kExitBadInput;
-      continue;
-    }
-    if (cloud.non_finite_dropped > 0) {
-      spdlog::info("{}: dropped {} points with NaN or infinite coordinates", path,
-                   cloud.non_finite_dropped);
-    }
-    spdlog::debug("{}: {} points ({})", path, cloud.points.size(), cloud.format);
-
-    const std::string source = std::filesystem::path(path).filename().string();
-    try {
-      const cs::pipeline::RecognitionResult result =
-          cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, source);
-      std::cout << (pretty ? cs::report::result_to_json_pretty(result)
-                           : cs::report::result_to_json_line(result))
-                << '\n'
-                << std::flush;
-    } catch (const std::exception& e) {
-      report_failure(path + ": recognition failed: " + e.what());
-      if (status == 0) status = kExitInternal;
-    }
+    cs::recognize::for_each_input_cloud(
+        path, limits,
+        [&](cs::recognize::InputCloud& in) {
+          const cs::io::CloudFile& cloud = in.cloud;
+          if (cloud.points.empty()) {
+            fail(in.where + ": no usable points" +
+                 (cloud.non_finite_dropped > 0
+                      ? " (" + std::to_string(cloud.non_finite_dropped) +
+                            " points read, all with NaN or infinite coordinates)"
+                      : " (the file holds no points)"));
+            return;
+          }
+          if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
+              far < cloud.points.size()) {
+            std::ostringstream text;
+            text << in.where << ": a point at (" << cloud.points[far].transpose()
+                 << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
+            fail(text.str());
+            return;
+          }
+          if (cloud.non_finite_dropped > 0) {
+            spdlog::info("{}: dropped {} points with NaN or infinite coordinates", in.where,
+                         cloud.non_finite_dropped);
+          }
+          spdlog::debug("{}: {} points ({})", in.where, cloud.points.size(), cloud.format);
+          try {
+            const cs::pipeline::RecognitionResult result =
+                cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, in.source);
+            std::cout << (pretty ? cs::report::result_to_json_pretty(result)
+                                 : cs::report::result_to_json_line(result))
+                      << '\n'
+                      << std::flush;
+          } catch (const std::exception& e) {
+            report_failure(in.where + ": recognition failed: " + e.what());
+            if (status == 0) status = kExitInternal;
+          }
+        },
+        fail);
   }
   return status;
 }
