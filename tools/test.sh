@@ -85,6 +85,7 @@ if ((sanitize)); then
   cs_log "PASS: ${#sanitize_tests[@]} unit-test programs and the process-level tests clean under ASan + UBSan in ${elapsed}s ($times)"
   exit 0
 fi
+cs_ensure_npm_packages
 cs_configure_and_build
 
 ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error
