@@ -6,6 +6,7 @@
 
 #include "io/detail/extension.hpp"
 #include "io/pointcloud2_cdr.hpp"
+#include "io/ros2_schemas.hpp"
 
 namespace cloudshape::io {
 namespace {

@@ -1,5 +1,5 @@
 // A ROS 2 sensor_msgs/msg/PointCloud2 as CDR bytes (a recording's message) to and from the plain
-// PointCloud2 value that decode_pointcloud2 turns into a cloud; plus the message's ros2msg schema.
+// PointCloud2 value that decode_pointcloud2 turns into a cloud.
 #include "io/pointcloud2_cdr.hpp"
 
 #include "io/detail/cdr.hpp"
@@ -59,50 +59,6 @@ std::string pointcloud2_to_cdr(const PointCloud2& cloud) {
   out.bytes(cloud.data.data(), cloud.data.size());
   out.u8(cloud.is_dense ? 1 : 0);
   return out.take();
-}
-
-std::string_view pointcloud2_schema_text() {
-  static constexpr std::string_view kText =
-      "std_msgs/Header header\n"
-      "\n"
-      "uint32 height\n"
-      "uint32 width\n"
-      "\n"
-      "PointField[] fields\n"
-      "\n"
-      "bool    is_bigendian\n"
-      "uint32  point_step\n"
-      "uint32  row_step\n"
-      "uint8[] data\n"
-      "\n"
-      "bool is_dense\n"
-      "\n"
-      "================================================================================\n"
-      "MSG: std_msgs/Header\n"
-      "builtin_interfaces/Time stamp\n"
-      "string frame_id\n"
-      "\n"
-      "================================================================================\n"
-      "MSG: builtin_interfaces/Time\n"
-      "int32 sec\n"
-      "uint32 nanosec\n"
-      "\n"
-      "================================================================================\n"
-      "MSG: sensor_msgs/PointField\n"
-      "uint8 INT8    = 1\n"
-      "uint8 UINT8   = 2\n"
-      "uint8 INT16   = 3\n"
-      "uint8 UINT16  = 4\n"
-      "uint8 INT32   = 5\n"
-      "uint8 UINT32  = 6\n"
-      "uint8 FLOAT32 = 7\n"
-      "uint8 FLOAT64 = 8\n"
-      "\n"
-      "string name\n"
-      "uint32 offset\n"
-      "uint8  datatype\n"
-      "uint32 count\n";
-  return kText;
 }
 
 }  // namespace cloudshape::io

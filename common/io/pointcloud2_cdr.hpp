@@ -1,5 +1,5 @@
 // A ROS 2 sensor_msgs/msg/PointCloud2 as CDR bytes (a recording's message) to and from the plain
-// PointCloud2 value that decode_pointcloud2 turns into a cloud; plus the message's ros2msg schema.
+// PointCloud2 value that decode_pointcloud2 turns into a cloud.
 #pragma once
 
 #include <string>
@@ -10,8 +10,6 @@
 
 namespace cloudshape::io {
 
-inline constexpr const char* kPointCloud2SchemaName = "sensor_msgs/msg/PointCloud2";
-
 // ReadError(name, place, "CDR: ...") when the bytes are not a whole PointCloud2 (short, a
 // lying sequence length, a string without its NUL) or the data exceeds limits.max_bytes.
 // Bytes after the last field are allowed: CDR pads messages to four bytes.
@@ -20,8 +18,5 @@ PointCloud2 pointcloud2_from_cdr(std::string_view bytes, const std::string& name
 
 // Little-endian CDR with its encapsulation header, as ROS 2 publishes and records it.
 std::string pointcloud2_to_cdr(const PointCloud2& cloud);
-
-// The ros2msg text of sensor_msgs/msg/PointCloud2 with its dependencies, as rosbag2 stores it.
-std::string_view pointcloud2_schema_text();
 
 }  // namespace cloudshape::io

@@ -11,6 +11,7 @@
 #include "io/cloud_reader.hpp"
 #include "io/mcap_writer.hpp"
 #include "io/pointcloud2_cdr.hpp"
+#include "io/ros2_schemas.hpp"
 #include "io/pointcloud2_encode.hpp"
 #include "pipeline_harness.hpp"
 #include "test_domains.hpp"
@@ -26,7 +27,7 @@ std::string write_recording(const std::string& dir, const std::vector<std::strin
   const std::string path = dir + "/rec.mcap";
   io::McapWriter writer(path);
   const auto schema =
-      writer.add_schema(io::kPointCloud2SchemaName, "ros2msg", std::string(io::pointcloud2_schema_text()));
+      writer.add_schema(io::kPointCloud2SchemaName, "ros2msg", io::ros2_schema_text(io::kPointCloud2SchemaName));
   const auto camera = writer.add_channel(schema, "/camera/points", "cdr");
   const auto other = writer.add_channel(schema, "/other", "cdr");
   std::uint64_t t = 50 * kSecond;

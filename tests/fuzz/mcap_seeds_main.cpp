@@ -7,6 +7,7 @@
 
 #include "io/mcap_writer.hpp"
 #include "io/pointcloud2_cdr.hpp"
+#include "io/ros2_schemas.hpp"
 #include "io/pointcloud2_encode.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -38,7 +39,7 @@ void write_seed(const std::string& dir, const Seed& seed) {
   options.chunk_size = 1024;
   cs::io::McapWriter writer(dir + "/" + seed.name + ".mcap", options);
   const auto schema = writer.add_schema(cs::io::kPointCloud2SchemaName, "ros2msg",
-                                        std::string(cs::io::pointcloud2_schema_text()));
+                                        cs::io::ros2_schema_text(cs::io::kPointCloud2SchemaName));
   const auto channel = writer.add_channel(schema, "/camera/depth/points", "cdr");
   const cs::io::PointCloud2Layout layout = seed.float64 ? cs::io::float64_layout() : cs::io::PointCloud2Layout{};
   for (std::uint64_t i = 0; i < 2; ++i) {

@@ -7,6 +7,7 @@
 #include "io/mcap_clouds.hpp"
 #include "io/mcap_writer.hpp"
 #include "io/pointcloud2_cdr.hpp"
+#include "io/ros2_schemas.hpp"
 #include "io/pointcloud2_encode.hpp"
 #include "io_test_support.hpp"
 
@@ -114,7 +115,7 @@ TEST_P(IoMcapClouds, EveryLayoutGivesBackThePoints) {
     options.compression = GetParam().compression;
     McapWriter writer(out, "rec.mcap", options);
     const auto schema =
-        writer.add_schema(kPointCloud2SchemaName, "ros2msg", std::string(pointcloud2_schema_text()));
+        writer.add_schema(kPointCloud2SchemaName, "ros2msg", ros2_schema_text(kPointCloud2SchemaName));
     const auto other = writer.add_schema("std_msgs/msg/String", "ros2msg", "string data\n");
     const auto cam = writer.add_channel(schema, "/camera/depth/points", "cdr");
     const auto lidar = writer.add_channel(schema, "/lidar/points", "cdr");
@@ -168,7 +169,7 @@ TEST(IoMcapCloudsErrors, ABadMessageIsReportedAndTheNextOneRead) {
   {
     McapWriter writer(out, "rec.mcap");
     const auto schema =
-        writer.add_schema(kPointCloud2SchemaName, "ros2msg", std::string(pointcloud2_schema_text()));
+        writer.add_schema(kPointCloud2SchemaName, "ros2msg", ros2_schema_text(kPointCloud2SchemaName));
     const auto cam = writer.add_channel(schema, "/points", "cdr");
     PointCloud2 no_z = cloud_message(sample_points(5), {}, {});
     no_z.fields.erase(no_z.fields.begin() + 2);
@@ -199,7 +200,7 @@ TEST(IoMcapClouds, ReadsOneMessageAgainByItsIndex) {
   {
     McapWriter writer(path);
     const auto schema =
-        writer.add_schema(kPointCloud2SchemaName, "ros2msg", std::string(pointcloud2_schema_text()));
+        writer.add_schema(kPointCloud2SchemaName, "ros2msg", ros2_schema_text(kPointCloud2SchemaName));
     const auto cam = writer.add_channel(schema, "/points", "cdr");
     for (std::size_t n : {5, 6, 7}) writer.write(cam, n, n, pointcloud2_to_cdr(cloud_message(sample_points(n), {}, {})));
   }

@@ -12,6 +12,7 @@
 #include "io/cloud_writers.hpp"
 #include "io/mcap_writer.hpp"
 #include "io/pointcloud2_cdr.hpp"
+#include "io/ros2_schemas.hpp"
 #include "io/pointcloud2_encode.hpp"
 #include "process.hpp"
 #include "report/result_json.hpp"
@@ -77,7 +78,7 @@ protected:
     options.chunk_size = 1;  // a chunk per message: a cut keeps the chunks before it
     io::McapWriter writer(path("rec.mcap"), options);
     const auto schema =
-        writer.add_schema(io::kPointCloud2SchemaName, "ros2msg", std::string(io::pointcloud2_schema_text()));
+        writer.add_schema(io::kPointCloud2SchemaName, "ros2msg", io::ros2_schema_text(io::kPointCloud2SchemaName));
     const auto other = writer.add_schema("std_msgs/msg/String", "ros2msg", "string data\n");
     const auto points = writer.add_channel(schema, "/camera/points", "cdr");
     const auto log = writer.add_channel(other, "/rosout", "cdr");
@@ -185,6 +186,24 @@ TEST_F(RecognizeMcapCli, ANonMcapFileNamedMcapIsOneError) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_TRUE(r.out.empty());
   EXPECT_EQ(r.err, "cloudshape-recognize: " + path("fake.mcap") + ": byte 0: not an MCAP file: it does not start with the MCAP magic\n");
+}
+
+}  // namespace
+}  // namespace cloudshape
+
+namespace cloudshape {
+namespace {
+
+TEST(RecognizeRecordCli, RecordOptionsAreChecked) {
+  const ProcessResult clouds_alone =
+      testing::run_process({CLOUDSHAPE_RECOGNIZE_BIN, "--record-clouds", "/nonexistent/box.pcd"});
+  EXPECT_EQ(clouds_alone.exit_code, 2);
+  EXPECT_NE(clouds_alone.err.find("--record-clouds requires --record"), std::string::npos) << clouds_alone.err;
+  const ProcessResult unwritable =
+      testing::run_process({CLOUDSHAPE_RECOGNIZE_BIN, "--record", "/nonexistent/dir/out.mcap", "/nonexistent/box.pcd"});
+  EXPECT_EQ(unwritable.exit_code, 2);
+  EXPECT_EQ(unwritable.err, "cloudshape-recognize: /nonexistent/dir/out.mcap: cannot create the recording\n");
+  EXPECT_TRUE(unwritable.out.empty());
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// cloudshape-recognize [--config FILE] [--pretty] [--verbose] FILE...
+// cloudshape-recognize [--config FILE] [--pretty] [--verbose] [--record OUT.mcap [--record-clouds]] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
 // file, or per PointCloud2 message of a .mcap recording, on stdout (JSON Lines; INTERFACE.md).
 // stdout carries nothing else: logs go to stderr.
@@ -13,13 +13,17 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <chrono>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "config/pipeline_config.hpp"
 #include "cloud_inputs.hpp"
+#include "config/pipeline_config.hpp"
+#include "io/pointcloud2_encode.hpp"
+#include "recording/result_recorder.hpp"
 #include "pipeline/recognize.hpp"
 #include "report/result_json.hpp"
 
@@ -38,6 +42,27 @@ void report_failure(const std::string& text) {
   std::cout.flush();
   std::fprintf(stderr, "%s: %s\n", kTool, line.c_str());
   std::fflush(stderr);
+}
+
+// A recording's cloud keeps its own header, time and topic; a file's gets the current time
+// in the configured frame, and its points as a PointCloud2 of the usual camera layout.
+void record(cloudshape::recording::ResultRecorder& recorder, const cloudshape::pipeline::RecognitionResult& result,
+            const cloudshape::recognize::InputCloud& in, const cloudshape::config::PipelineConfig& cfg) {
+  namespace cs = cloudshape;
+  if (in.recorded != nullptr) {
+    recorder.record(result, in.recorded->header, in.recorded->log_time, &in.recorded->message, in.recorded->topic);
+    return;
+  }
+  const auto now = static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
+  const cs::io::RosHeader header = cs::recording::file_header(now, cfg.ros2);
+  if (!recorder.records_clouds()) {
+    recorder.record(result, header, now);
+    return;
+  }
+  const cs::io::PointCloud2 cloud = cs::io::encode_pointcloud2(in.cloud.points, in.cloud.grid, {}, header);
+  recorder.record(result, header, now, &cloud);
 }
 
 void set_up_logging(bool verbose) {
@@ -62,11 +87,18 @@ int main(int argc, char** argv) {
   bool pretty = false;
   bool verbose = false;
   std::vector<std::string> files;
+  std::string record_path;
+  bool record_clouds = false;
   app.add_option("--config", config_path,
                  "pipeline configuration (YAML); default: config/pipeline.yaml of the sources, "
                  "else built-in defaults");
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
+  app.add_option("--record", record_path,
+                 "also write the results to this MCAP file (Detection3DArray and MarkerArray per cloud, "
+                 "profile ros2: Foxglove and Lichtblick open it)");
+  app.add_flag("--record-clouds", record_clouds, "with --record: the input clouds too, as sensor_msgs/PointCloud2")
+      ->needs("--record");
   app.add_option("files", files, "point-cloud files and MCAP recordings")->required();
   try {
     app.parse(argc, argv);
@@ -94,6 +126,16 @@ int main(int argc, char** argv) {
   // The configuration's input limits: a bigger file is refused before it is read in full.
   const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
                                   static_cast<std::size_t>(cfg.input.max_bytes)};
+  std::optional<cs::recording::ResultRecorder> recorder;
+  if (!record_path.empty()) {
+    try {
+      recorder.emplace(record_path, cs::recording::RecorderSettings{record_clouds, cs::io::McapCompression::zstd,
+                                                                    cfg.ros2, "/cloudshape/points"});
+    } catch (const std::exception& e) {
+      report_failure(e.what());
+      return kExitBadInput;
+    }
+  }
   int status = 0;
   const auto fail = [&](const std::string& text) {
     report_failure(text);
@@ -132,12 +174,22 @@ int main(int argc, char** argv) {
                                  : cs::report::result_to_json_line(result))
                       << '\n'
                       << std::flush;
+            if (recorder) record(*recorder, result, in, cfg);
           } catch (const std::exception& e) {
             report_failure(in.where + ": recognition failed: " + e.what());
             if (status == 0) status = kExitInternal;
           }
         },
         fail);
+  }
+  if (recorder) {
+    try {
+      recorder->close();
+      spdlog::info("{}: {} messages recorded", record_path, recorder->messages());
+    } catch (const std::exception& e) {
+      report_failure(e.what());
+      return kExitInternal;
+    }
   }
   return status;
 }

@@ -34,3 +34,12 @@ for variant in lz4_float32 zstd_float64_organized zstd_float32_organized lz4_flo
   echo -n "   $variant: "
   node "$here/compare_results.js" "$work/$variant.pcd.jsonl" "$work/$variant.mcap.jsonl"
 done
+
+echo "2. recordings written by cloudshape, validated and decoded by @mcap/core and rosmsg2-serialization"
+"$bin/cloudshape-recognize" --record "$work/replayed.mcap" --record-clouds "$work/node/zstd_float32_organized.mcap" \
+  >"$work/replayed.jsonl"
+echo -n "   recognize --record --record-clouds of a recording: "
+node "$here/check_recording.js" "$work/replayed.mcap" "$work/replayed.jsonl" --clouds --stamps 100,101,102
+"$bin/cloudshape-recognize" --record "$work/files.mcap" "$work/node/lz4_float64_0.pcd" "${clouds[@]}" >"$work/files.jsonl"
+echo -n "   recognize --record of files: "
+node "$here/check_recording.js" "$work/files.mcap" "$work/files.jsonl"
