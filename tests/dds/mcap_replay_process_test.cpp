@@ -5,10 +5,12 @@
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "io/cloud_reader.hpp"
+#include "io/mcap_reader.hpp"
 #include "io/mcap_writer.hpp"
 #include "io/pointcloud2_cdr.hpp"
 #include "io/ros2_schemas.hpp"
@@ -84,6 +86,79 @@ TEST(DdsMcapReplay, RateReplacesTheRecordedTimingAndBadRecordingsAreReported) {
   EXPECT_NE(inj.err.find("sent rec.mcap#2 as cloud"), std::string::npos) << inj.err;
   ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
   EXPECT_EQ(p.echo_lines().size(), 3u);
+  p.stop_services();
+}
+
+}  // namespace
+}  // namespace cloudshape::testing
+
+namespace cloudshape::testing {
+namespace {
+
+// echo --record --record-clouds through the five services: the recording holds, per result echo
+// printed, the cloud and its Detection3DArray and MarkerArray, and @mcap/core validates it.
+TEST(DdsMcapRecord, EchoRecordsResultsAndTheirClouds) {
+  Pipeline p("mcap_record", domains::mcap_record);
+  std::vector<std::string> clouds = synthetic_clouds(p.dir() + "/clouds", 8000);
+  clouds.resize(3);
+  const std::string out = p.dir() + "/echo.mcap";
+  p.start_echo(3, {"--record", out, "--record-clouds"});
+  for (const std::string& s : kStages) p.start_service(s);
+  // echo's raw-cloud reader is one subscriber, ingest the other.
+  const ProcessResult inj = p.inject({"--subscribers", "2", clouds[0], clouds[1], clouds[2]});
+  EXPECT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
+  p.stop_services();
+  EXPECT_NE(read_text(p.log_path("echo")).find("echo.mcap: 9 messages recorded"), std::string::npos)
+      << read_text(p.log_path("echo"));
+
+  std::map<std::string, int> topics;
+  const io::McapReadSummary summary = io::read_mcap_file(out, [&](const io::McapChannel& c, const io::McapSchema*,
+                                                                  const io::McapMessage&) { ++topics[c.topic]; });
+  EXPECT_TRUE(summary.summary_crc_checked);
+  EXPECT_EQ(topics, (std::map<std::string, int>{
+                        {"/cloudshape/detections", 3}, {"/cloudshape/markers", 3}, {"/cloudshape/points", 3}}));
+  const ProcessResult check = run_process({CLOUDSHAPE_NODE, std::string(CLOUDSHAPE_SOURCE_DIR) +
+                                                                "/tests/interop/mcap-node/check_recording.js",
+                                           out, p.dir() + "/echo.jsonl", "--clouds"});
+  EXPECT_EQ(check.exit_code, 0) << check.out << check.err;
+  std::printf("%s", check.out.c_str());
+}
+
+}  // namespace
+}  // namespace cloudshape::testing
+
+namespace cloudshape::testing {
+namespace {
+
+// Recordings written by @mcap/core (tests/interop/mcap-node/write_clouds.js), replayed: echo
+// prints what cloudshape-recognize prints for them (which the interop test holds equal to PCDs).
+TEST(DdsMcapReplay, RecordingsWrittenByMcapCoreReplay) {
+  Pipeline p("mcap_replay_node", domains::mcap_replay_node);
+  std::vector<std::string> xyz;
+  for (const auto& [shape, dims] : {std::pair<std::string, std::string>{"box", "30,20,10"}, {"sphere", "12"}}) {
+    const std::string out = p.dir() + "/" + shape + ".xyz";
+    const ProcessResult r = run_process({kBin + "/cloudshape-synth", "shape", "--shape", shape, "--dims", dims,
+                                         "--points", "8000", "--seed", "5", "-o", out});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    xyz.push_back(out);
+  }
+  std::vector<std::string> node{CLOUDSHAPE_NODE,
+                                std::string(CLOUDSHAPE_SOURCE_DIR) + "/tests/interop/mcap-node/write_clouds.js",
+                                p.dir() + "/node"};
+  node.insert(node.end(), xyz.begin(), xyz.end());
+  const ProcessResult written = run_process(node);
+  ASSERT_EQ(written.exit_code, 0) << written.err;
+  const std::vector<std::string> recordings = {p.dir() + "/node/zstd_float32_organized.mcap",
+                                               p.dir() + "/node/lz4_float64.mcap"};
+  const std::vector<std::string> expected = recognize(recordings);
+  ASSERT_EQ(expected.size(), 4u);
+  p.start_echo(4);
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject({"--rate", "20", recordings[0], recordings[1]});
+  EXPECT_EQ(inj.exit_code, 0) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
+  expect_same_results(expected, p.echo_lines());
   p.stop_services();
 }
 
