@@ -89,11 +89,6 @@ TEST(DdsMcapReplay, RateReplacesTheRecordedTimingAndBadRecordingsAreReported) {
   p.stop_services();
 }
 
-}  // namespace
-}  // namespace cloudshape::testing
-
-namespace cloudshape::testing {
-namespace {
 
 // echo --record --record-clouds through the five services: the recording holds, per result echo
 // printed, the cloud and its Detection3DArray and MarkerArray, and @mcap/core validates it.
@@ -125,11 +120,6 @@ TEST(DdsMcapRecord, EchoRecordsResultsAndTheirClouds) {
   std::printf("%s", check.out.c_str());
 }
 
-}  // namespace
-}  // namespace cloudshape::testing
-
-namespace cloudshape::testing {
-namespace {
 
 // Recordings written by @mcap/core (tests/interop/mcap-node/write_clouds.js), replayed: echo
 // prints what cloudshape-recognize prints for them (which the interop test holds equal to PCDs).

@@ -5,7 +5,17 @@
 #include <string>
 #include <string_view>
 
+#include "io/cloud_file.hpp"
+
 namespace cloudshape::fuzz {
+
+// Small enough that a lying header cannot make the fuzzer run out of memory.
+inline io::ReadLimits fuzz_limits() {
+  io::ReadLimits limits;
+  limits.max_points = 100'000;
+  limits.max_bytes = 1u << 20;
+  return limits;
+}
 
 // Each returns "" when the input was read or refused the documented way (io::ReadError for
 // files, dds::RawCloudError for a raw-cloud sample), else the invariant the result broke.

@@ -14,13 +14,6 @@
 namespace cloudshape::fuzz {
 namespace {
 
-io::ReadLimits fuzz_limits() {
-  io::ReadLimits limits;
-  limits.max_points = 100'000;
-  limits.max_bytes = 1u << 20;
-  return limits;
-}
-
 struct Seen {
   std::string topic, encoding, schema_name, schema_text;
   std::uint64_t log_time, publish_time;

@@ -188,11 +188,6 @@ TEST_F(RecognizeMcapCli, ANonMcapFileNamedMcapIsOneError) {
   EXPECT_EQ(r.err, "cloudshape-recognize: " + path("fake.mcap") + ": byte 0: not an MCAP file: it does not start with the MCAP magic\n");
 }
 
-}  // namespace
-}  // namespace cloudshape
-
-namespace cloudshape {
-namespace {
 
 TEST(RecognizeRecordCli, RecordOptionsAreChecked) {
   const ProcessResult clouds_alone =
