@@ -67,30 +67,37 @@ function checkDetections(msg, result, where) {
   });
 }
 
+// markers[0] clears the namespace; then per object its solid (none for an unknown object) and
+// its text label.
 function checkMarkers(msg, result, header, where) {
   const m = msg.markers;
-  if (m.length !== 1 + 2 * result.objects.length) fail(`${where}: ${m.length} markers for ${result.objects.length} objects`);
   if (m[0].action !== 3) fail(`${where}: the first marker is not a DELETEALL`);
+  let next = 1;
   result.objects.forEach((object, i) => {
-    const solid = m[1 + 2 * i], label = m[2 + 2 * i];
     const w = `${where} object ${i}`;
-    if (solid.ns !== result.source) fail(`${w}: namespace ${solid.ns}, source ${result.source}`);
-    if (MARKER_TYPE[object.shape] !== undefined && solid.type !== MARKER_TYPE[object.shape]) {
-      fail(`${w}: marker type ${solid.type} for a ${object.shape}`);
+    const solid = object.shape === "unknown" ? undefined : m[next++];
+    const label = m[next++] || fail(`${w}: no label marker`);
+    if (solid) {
+      if (solid.ns !== result.source) fail(`${w}: namespace ${solid.ns}, source ${result.source}`);
+      if (MARKER_TYPE[object.shape] !== undefined && solid.type !== MARKER_TYPE[object.shape]) {
+        fail(`${w}: marker type ${solid.type} for a ${object.shape}`);
+      }
+      if (object.shape === "box") nearVec(xyz(solid.scale), expectedSize(object), LENGTH, `${w} cube scale`);
+      if (object.shape === "sphere") nearVec(xyz(solid.scale), expectedSize(object), LENGTH, `${w} sphere scale`);
+      if (object.shape === "cylinder") {
+        const d = object.dimensions;
+        nearVec(xyz(solid.scale), [2 * d.radius, 2 * d.radius, d.height], LENGTH, `${w} cylinder scale`);
+      }
     }
-    if (object.shape === "box") nearVec(xyz(solid.scale), expectedSize(object), LENGTH, `${w} cube scale`);
-    if (object.shape === "sphere") nearVec(xyz(solid.scale), expectedSize(object), LENGTH, `${w} sphere scale`);
-    if (object.shape === "cylinder") {
-      const d = object.dimensions;
-      nearVec(xyz(solid.scale), [2 * d.radius, 2 * d.radius, d.height], LENGTH, `${w} cylinder scale`);
-    }
-    if (label.type !== 9 || !label.text.startsWith(object.shape)) fail(`${w}: label ${label.type} '${label.text}'`);
-    for (const marker of [solid, label]) {
+    const shown = (object.partial ? "partial " : "") + object.shape;
+    if (label.type !== 9 || !label.text.startsWith(shown)) fail(`${w}: label ${label.type} '${label.text}'`);
+    for (const marker of solid ? [solid, label] : [label]) {
       if (marker.header.stamp.sec !== header.stamp.sec || marker.header.frame_id !== header.frame_id) {
         fail(`${w}: marker header differs from the detections'`);
       }
     }
   });
+  if (next !== m.length) fail(`${where}: ${m.length} markers, ${next} expected for ${result.objects.length} objects`);
 }
 
 function checkCloud(msg, result, where) {

@@ -43,3 +43,11 @@ node "$here/check_recording.js" "$work/replayed.mcap" "$work/replayed.jsonl" --c
 "$bin/cloudshape-recognize" --record "$work/files.mcap" "$work/node/lz4_float64_0.pcd" "${clouds[@]}" >"$work/files.jsonl"
 echo -n "   recognize --record of files: "
 node "$here/check_recording.js" "$work/files.mcap" "$work/files.jsonl"
+# A 640 x 480 scene (several partial objects, organized) and a flat patch (an unknown object).
+"$bin/cloudshape-synth" scene --layout row --count 3 --seed 2 -o "$work/scene.pcd" >/dev/null
+awk 'BEGIN {for (i = 0; i < 60; ++i) for (j = 0; j < 60; ++j) printf "%g %g 1\n", i * 0.1, j * 0.1}' >"$work/flat.xyz"
+"$bin/cloudshape-recognize" --record "$work/scene.mcap" --record-clouds "$work/scene.pcd" "$work/flat.xyz" \
+  >"$work/scene.jsonl"
+grep -q '"shape":"unknown"' "$work/scene.jsonl" || { echo "interop_test.sh: the flat patch was not unknown" >&2; exit 1; }
+echo -n "   recognize --record --record-clouds of a scene and an unknown object: "
+node "$here/check_recording.js" "$work/scene.mcap" "$work/scene.jsonl" --clouds
