@@ -71,21 +71,24 @@ TEST(DdsMcapReplay, EveryMessageAtItsTimeGivesWhatRecognizeGives) {
   p.stop_services();
 }
 
-TEST(DdsMcapReplay, RateReplacesTheRecordedTimingAndBadRecordingsAreReported) {
+TEST(DdsMcapReplay, RateAndCountReplaceTheRecordedTimingAndBadRecordingsAreReported) {
   Pipeline p("mcap_replay_rate", domains::mcap_replay_rate);
   std::vector<std::string> clouds = synthetic_clouds(p.dir() + "/clouds", 8000);
   clouds.resize(2);
   const std::string rec = write_recording(p.dir(), clouds);
   const std::string fake = p.dir() + "/fake.mcap";
   { std::ofstream(fake) << "not a recording\n"; }
-  p.start_echo(3);
+  // --count goes round the files: the recording's three clouds, then its first two again.
+  p.start_echo(5);
   for (const std::string& s : kStages) p.start_service(s);
-  const ProcessResult inj = p.inject({"--rate", "50", fake, rec});
+  const ProcessResult inj = p.inject({"--rate", "50", "--count", "5", fake, rec});
   EXPECT_EQ(inj.exit_code, 2) << inj.err;
   EXPECT_NE(inj.err.find(fake + ": byte 0: not an MCAP file"), std::string::npos) << inj.err;
-  EXPECT_NE(inj.err.find("sent rec.mcap#2 as cloud"), std::string::npos) << inj.err;
+  EXPECT_NE(inj.err.find("sent rec.mcap#2 as cloud 2"), std::string::npos) << inj.err;
+  EXPECT_NE(inj.err.find("sent rec.mcap#1 as cloud 4"), std::string::npos) << inj.err;
+  EXPECT_EQ(inj.err.find("as cloud 5"), std::string::npos) << inj.err;
   ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
-  EXPECT_EQ(p.echo_lines().size(), 3u);
+  EXPECT_EQ(p.echo_lines().size(), 5u);
   p.stop_services();
 }
 
