@@ -3,6 +3,7 @@
 #include "io/mcap_reader.hpp"
 
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <utility>
 
