@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <vector>
 
 #include "config/config_fields.hpp"
 #include "markdown_text.hpp"
@@ -49,9 +50,29 @@ std::map<std::string, DocRow> documented_keys() {
 
 template <class T>
 std::string type_text() {
+  if constexpr (std::is_same_v<T, std::vector<std::string>>) return "list of names";
+  if constexpr (std::is_same_v<T, std::string>) return "text";
   if constexpr (std::is_same_v<T, bool>) return "true/false";
   if constexpr (std::is_floating_point_v<T>) return "number >= 0";
   return "integer >= 0";
+}
+
+// A default as the docs write it: a list as YAML's flow form ("[]", "[/a, /b]"), text as
+// itself ("\"\"" when empty), a number with all its digits.
+template <class T>
+std::string value_text(const T& value) {
+  std::ostringstream shown;
+  if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+    shown << '[';
+    for (std::size_t i = 0; i < value.size(); ++i) shown << (i ? ", " : "") << value[i];
+    shown << ']';
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    shown << (value.empty() ? "\"\"" : value);
+  } else {
+    shown.precision(17);
+    shown << value;
+  }
+  return shown.str();
 }
 
 // Whether the documented default is the built-in one, exactly (a double's text must parse to
@@ -59,7 +80,11 @@ std::string type_text() {
 template <class T>
 bool same_value(const std::string& text, const T& value) {
   try {
-    if constexpr (std::is_same_v<T, bool>) {
+    if constexpr (std::is_same_v<T, std::vector<std::string>>) {
+      return text == value_text(value);
+    } else if constexpr (std::is_same_v<T, std::string>) {
+      return text == value_text(value);
+    } else if constexpr (std::is_same_v<T, bool>) {
       return text == (value ? "true" : "false");
     } else if constexpr (std::is_floating_point_v<T>) {
       std::size_t used = 0;
@@ -94,13 +119,10 @@ TEST(ConfigurationDocs, KeyTableMatchesTheLoadersSchema) {
       }
       EXPECT_EQ(it->second.type, type_text<T>())
           << name << " (docs/configuration.md line " << it->second.line << ")";
-      std::ostringstream shown;
-      shown.precision(17);
-      shown << value;
       EXPECT_TRUE(same_value(it->second.default_value, value))
           << name << ": docs/configuration.md line " << it->second.line << " says default "
           << it->second.default_value << ", the code (common/config/stage_configs.hpp) "
-          << shown.str();
+          << value_text(value);
     });
   });
   for (const auto& [name, row] : documented)
