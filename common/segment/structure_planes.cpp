@@ -58,6 +58,15 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     std::shuffle(sample.begin(), sample.end(), rng);
     sample.resize(kScoreSamples);
   }
+  // The sample's nodes side by side: every hypothesis scans them, is_inlier's test on a copy.
+  struct Scored {
+    Point node;
+    Eigen::Vector3d normal;
+    double limit;
+  };
+  std::vector<Scored> scored;
+  scored.reserve(sample.size());
+  for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
   geometry::Plane best;
   std::size_t best_score = 0;
@@ -67,7 +76,9 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
     std::size_t score = 0;
-    for (std::uint32_t n : sample) score += is_inlier(g, n, p, band, min_cos) ? 1 : 0;
+    for (const Scored& c : scored) {
+      score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
+    }
     if (score > best_score) {
       best_score = score;
       best = p;
