@@ -34,8 +34,7 @@ double squared_distance(const Point& a, const Point& b) {
 // The points binned into cubic cells: the members of each occupied cell in increasing index.
 class Grid {
  public:
-  Grid(const PointList& points, double cell) : points_(points), map_(points.size() / 2 + 16) {
-    const Bounds b = bounding_box(points);
+  Grid(const PointList& points, const Bounds& b, double cell) : points_(points), map_(points.size() / 4 + 16) {
     origin_ = b.min;
     cell_ = cell;
     inv_ = 1.0 / cell;
@@ -114,14 +113,14 @@ class Grid {
   std::vector<std::uint32_t> members_;
 };
 
-// A cell about the cloud's spacing: its points spread over the bounding box's faces (a surface),
-// or along its longest edge (a line), whichever is coarser.
-double spacing_cell(const PointList& points) {
-  const Bounds b = bounding_box(points);
+// A cell about twice the cloud's spacing, its points spread over the bounding box's faces (a
+// surface) or along its longest edge (a line), whichever is coarser: a few points per cell, and
+// the nearest within the cell's own block.
+double spacing_cell(const Bounds& b, std::size_t count) {
   const Eigen::Vector3d e = b.max - b.min;
-  const double n = static_cast<double>(points.size());
+  const double n = static_cast<double>(count);
   const double faces = 2.0 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
-  return std::max({std::sqrt(faces / n), e.maxCoeff() / n, e.maxCoeff() / kMaxCells * 2.0});
+  return std::max({2.0 * std::sqrt(faces / n), 2.0 * e.maxCoeff() / n, e.maxCoeff() / kMaxCells * 2.0});
 }
 
 double brute_nearest_other(const PointList& points, std::size_t i) {
@@ -139,28 +138,67 @@ bool closer(double da, std::uint32_t ia, double db, std::uint32_t ib) { return d
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries) {
   std::vector<double> out(queries.size(), 0.0);
   if (points.size() < 2) return out;
-  const Grid grid(points, spacing_cell(points));
+  const Bounds box = bounding_box(points);
+  const double cell = spacing_cell(box, points.size());
+  const double inv = 1.0 / cell;
+  const Eigen::Vector3d extent = (box.max - box.min) * inv;
+  const bool valid = cell > 0.0 && std::isfinite(inv) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
   std::vector<std::size_t> hard;
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    const std::uint32_t i = queries[q];
-    if (!grid.valid()) {
-      hard.push_back(q);
-      continue;
+  if (!valid) {
+    for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
+  } else {
+    const auto coords = [&](const Point& p) {
+      const Eigen::Vector3d c = (p - box.min) * inv;
+      return std::array<std::int64_t, 3>{static_cast<std::int64_t>(c.x()) + 1, static_cast<std::int64_t>(c.y()) + 1,
+                                         static_cast<std::int64_t>(c.z()) + 1};
+    };
+    // The cells of every query's 27-cell block, each with the queries it serves: then one pass
+    // over the points, a lookup each, instead of binning them all.
+    detail::CellMap blocks(queries.size() * 27);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
+    pairs.reserve(queries.size() * 27);
+    std::uint32_t block_cells = 0;
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const auto c = coords(points[queries[q]]);
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            bool inserted = false;
+            const std::uint32_t b = blocks.find_or_insert(key_of(c[0] + dx, c[1] + dy, c[2] + dz), block_cells, inserted);
+            block_cells += inserted ? 1 : 0;
+            pairs.emplace_back(b, static_cast<std::uint32_t>(q));
+          }
+        }
+      }
     }
-    const auto c = grid.coords(points[i]);
-    double best = std::numeric_limits<double>::infinity();
-    bool done = false;
-    for (std::int64_t ring = 0; ring <= 2 && !done; ++ring) {
-      grid.for_ring(c, ring, [&](std::uint32_t j) {
-        if (j != i) best = std::min(best, squared_distance(points[i], points[j]));
-      });
-      const double reach = grid.reach(points[i], ring);
-      done = best <= reach * reach;
+    std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
+    for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
+    for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
+    std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
+    for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
+    std::vector<double> best(queries.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto c = coords(points[i]);
+      const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
+      if (slot == detail::CellMap::kAbsent) continue;
+      for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
+        const std::uint32_t q = cell_queries[e];
+        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+      }
     }
-    if (done) {
-      out[q] = std::sqrt(best);
-    } else {
-      hard.push_back(q);
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const Eigen::Vector3d u = (points[queries[q]] - box.min) * inv;
+      double margin = 1.0;
+      for (int a = 0; a < 3; ++a) {
+        const double f = u[a] - std::floor(u[a]);
+        margin = std::min({margin, f, 1.0 - f});
+      }
+      const double reach = std::max(0.0, margin + 1.0 - kSlack) * cell;
+      if (best[q] <= reach * reach) {
+        out[q] = std::sqrt(best[q]);
+      } else {
+        hard.push_back(q);
+      }
     }
   }
   // Far from everything (an outlier) or a degenerate grid: a scan for a few, else a kd-tree.
@@ -184,7 +222,7 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
   k = std::min(k, n);
   out.assign(n * k, 0);
   if (k == 0) return;
-  const Grid grid(points, cell);
+  const Grid grid(points, bounding_box(points), cell);
   std::vector<std::uint32_t> hard;
   if (!grid.valid()) {
     hard.resize(n);
