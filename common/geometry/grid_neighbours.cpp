@@ -34,7 +34,7 @@ double squared_distance(const Point& a, const Point& b) {
 // The points binned into cubic cells: the members of each occupied cell in increasing index.
 class Grid {
  public:
-  Grid(const PointList& points, const Bounds& b, double cell) : points_(points), map_(points.size() / 4 + 16) {
+  Grid(const PointList& points, const Bounds& b, double cell) : map_(points.size() / 4 + 16) {
     origin_ = b.min;
     cell_ = cell;
     inv_ = 1.0 / cell;
@@ -61,7 +61,6 @@ class Grid {
 
   bool valid() const { return valid_; }
   std::size_t cells() const { return begin_.empty() ? 0 : begin_.size() - 1; }
-  double cell() const { return cell_; }
 
   std::array<std::int64_t, 3> coords(const Point& p) const {
     const Eigen::Vector3d q = (p - origin_) * inv_;
@@ -102,7 +101,6 @@ class Grid {
   const std::uint32_t* members_end(std::uint32_t s) const { return members_.data() + begin_[s + 1]; }
 
  private:
-  const PointList& points_;
   detail::CellMap map_;
   Point origin_ = Point::Zero();
   double cell_ = 0.0;
