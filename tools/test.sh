@@ -45,7 +45,7 @@ sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recogniti
                 fuzz_regressions_test dds_ingest_sample_test dds_convert_test
                 dds_socket_buffers_test dds_participant_cli_test recognize_cli_test recognize_mcap_cli_test
                 synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test
-                render_geometry_test render_png_test)
+                render_geometry_test render_png_test recognize_render_cli_test)
 # ... and the process-level tests (ctest names) whose programs then run sanitized: the five
 # services, inject and echo (DDS pipeline and crafted samples), recognize, and cloudshape-synth's
 # shape, suite and mesh commands. Left out for the CI's time budget: the fault and soak tests
