@@ -54,6 +54,8 @@ fi
 py=/usr/bin/python3
 report="$CLOUDSHAPE_REPO/tools/peers/peers_report.py"
 if ((install)); then cs_ensure_packages libpcl-dev python3-open3d; fi
+# Before the builds, so that a missing Open3D costs no build time.
+"$py" -c 'import open3d' 2>/dev/null || cs_die "$py cannot import open3d: install python3-open3d"
 cs_configure_and_build cloudshape-recognize cloudshape-synth cloudshape-bench
 bin="$CLOUDSHAPE_BUILD_DIR/bin"
 

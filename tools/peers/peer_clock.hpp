@@ -1,5 +1,6 @@
 // Wall-clock milliseconds around one step of a peer pipeline. Each program times only its
-// pipeline (not process start or file reading), as cloudshape-recognize's timings_ms.total does.
+// pipeline (not process start or file reading), as cloudshape-recognize's timings_ms.total does
+// (the same lap clock as common/pipeline/recognize.cpp's, restated: this project links PCL only).
 #pragma once
 
 #include <chrono>
