@@ -71,6 +71,7 @@ cmake -S "$CLOUDSHAPE_REPO/tools/peers" -B "$peer_build" "${peer_gen[@]}" \
 cmake --build "$peer_build" --parallel "$CLOUDSHAPE_JOBS" >&2 || cs_die "building tools/peers failed"
 
 mkdir -p "$out/clouds" "$out/raw"
+rm -f "$out"/raw/*  # each run's outputs alone (run_tool appends)
 samples="$out/samples.tsv"
 : >"$samples"
 
