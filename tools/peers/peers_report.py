@@ -51,7 +51,8 @@ def _shapes_answer(result):
 
 
 def _peer_answer(line):
-    planes = f"{line.get('planes', 0)} planes"
+    count = line.get("planes", 0)
+    planes = f"{count} plane{'' if count == 1 else 's'}"
     if line.get("fit_found") is True:
         return f"{planes} + {line.get('shape')} fit"
     return planes
