@@ -12,6 +12,7 @@
 
 #include "io/cloud_writers.hpp"
 #include "process.hpp"
+#include "solid_samples.hpp"
 #include "report/result_json.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -24,21 +25,12 @@ using Json = nlohmann::ordered_json;
 using testing::lines_of;
 using testing::ProcessResult;
 using testing::run_process;
+using testing::sample;
+using testing::solid;
 
 const std::string kBin = CLOUDSHAPE_RECOGNIZE_BIN;
 const std::string kPrefix = "cloudshape-recognize: ";
 
-// The solid behind sample(kind, n, seed): the same generator draws it first.
-synth::SolidSpec solid(synth::ShapeKind kind, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  return synth::random_solid(kind, rng, 40.0);
-}
-
-PointList sample(synth::ShapeKind kind, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const synth::SolidSpec spec = synth::random_solid(kind, rng, 40.0);
-  return synth::sample_solid_surface(spec, n, rng);
-}
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 

@@ -15,9 +15,8 @@
 #include "io/ros2_schemas.hpp"
 #include "io/pointcloud2_encode.hpp"
 #include "process.hpp"
+#include "solid_samples.hpp"
 #include "report/result_json.hpp"
-#include "synth/random_solid.hpp"
-#include "synth/sample_solid.hpp"
 
 namespace cloudshape {
 namespace {
@@ -26,11 +25,8 @@ namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 using testing::lines_of;
 using testing::ProcessResult;
+using testing::sample;
 
-PointList sample(synth::ShapeKind kind, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  return synth::sample_solid_surface(synth::random_solid(kind, rng, 40.0), n, rng);
-}
 
 // `points` at pixels i + i / 4 of a width-wide grid (every fifth pixel empty), as a depth frame.
 GridLayout grid_for(std::size_t n, std::uint32_t width) {

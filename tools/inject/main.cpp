@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
         std::this_thread::sleep_until(next);
         next += std::chrono::duration_cast<Clock::duration>(period);
       }
-      const cs::inject::PendingCloud cloud{id, path, message, source, now_ns(), Clock::now(), 1};
+      const cs::inject::PendingCloud cloud{id, path, source, now_ns(), Clock::now(), 1, message};
       if (!delivery.send(cloud, file)) return false;
       const std::string grid = file.grid.organized() ? ", " + std::to_string(file.grid.width) + " x " +
                                                            std::to_string(file.grid.height) + " grid"

@@ -17,11 +17,11 @@ using Clock = std::chrono::steady_clock;
 struct PendingCloud {
   std::uint64_t id = 0;
   std::string path;            // read again to send it again: memory does not hold the points
-  std::optional<std::size_t> message;  // the PointCloud2 message of an .mcap path
   std::string source;          // header.source, with the id the key of its result
   std::int64_t inject_time_ns = 0;  // of the first attempt: latency counts the recovery
   Clock::time_point last_sent;
   int attempts = 0;
+  std::optional<std::size_t> message;  // the PointCloud2 message of an .mcap path
 };
 
 // Thread-safe: the sender adds and resends, the result watcher completes.
