@@ -132,7 +132,6 @@ trap - EXIT
 
 # What a person wants to see last: the objects, one line each. The recognizer runs once more for
 # it (a second or two for the samples) so that the JSON above stays untouched for scripts.
-# (render: the render branch adds --render "$results/pictures" to this run and names the folder.)
-cs_log "results (JSON: $results/recognize.jsonl, $results/dds.jsonl):"
+cs_log "results (JSON: $results/recognize.jsonl, $results/dds.jsonl; pictures: $CLOUDSHAPE_BUILD_DIR/pictures):"
 "$bin/cloudshape-recognize" --format table "${clouds[@]}" || true
 exit "$status"

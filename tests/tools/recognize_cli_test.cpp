@@ -353,6 +353,22 @@ TEST_F(RecognizeCli, TableFormatGivesOneLinePerObjectWithTheJsonFigures) {
   EXPECT_EQ(table.out.find('{'), std::string::npos) << "no JSON in the table";
 }
 
+// A recording's clouds are named FILE#INDEX, longer than the file's name: the columns still
+// line up with the header.
+TEST_F(RecognizeCli, TableColumnsLineUpForARecordingsClouds) {
+  const ProcessResult record =
+      run({"--record", path("table.mcap"), "--record-clouds", path("box.xyz")});
+  ASSERT_EQ(record.exit_code, 0) << record.err;
+  const ProcessResult table = run({"--format", "table", path("table.mcap"), path("box.xyz")});
+  EXPECT_EQ(table.exit_code, 0) << table.err;
+  const auto rows = lines_of(table.out);
+  ASSERT_EQ(rows.size(), 3u) << table.out;
+  const std::size_t shape_column = rows[0].find("shape");
+  EXPECT_EQ(rows[1].rfind("table.mcap#0 ", 0), 0u) << rows[1];
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_EQ(rows[i].find("  box ") + 2, shape_column) << table.out;
+}
+
 TEST_F(RecognizeCli, UnknownFormatIsACommandLineError) {
   const ProcessResult r = run({"--format", "xml", path("box.xyz")});
   EXPECT_EQ(r.exit_code, 2);

@@ -128,7 +128,12 @@ int main(int argc, char** argv) {
   cs::report::TableLayout layout;
   if (table) {
     std::vector<std::string> sources;
-    for (const auto& f : files) sources.push_back(std::filesystem::path(f).filename().string());
+    for (const auto& f : files) {
+      // A recording's clouds are named FILE#INDEX: room for indexes up to 5 digits.
+      std::string name = std::filesystem::path(f).filename().string();
+      if (std::filesystem::path(f).extension() == ".mcap") name += "#00000";
+      sources.push_back(name);
+    }
     layout = cs::report::table_layout(sources);
   }
 
