@@ -121,7 +121,19 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_side_span", c.min_side_span);
 }
 
-// Calls f(section_name, section_struct) for every stage section.
+template <class F>
+void visit_fields(Ros2Config& c, F&& f) {
+  f("input_topics", c.input_topics);
+  f("detections_topic", c.detections_topic);
+  f("markers_topic", c.markers_topic);
+  f("file_frame_id", c.file_frame_id);
+  f("marker_alpha", c.marker_alpha);
+  f("label_height", c.label_height);
+  f("label_fallback_height", c.label_fallback_height);
+  f("circle_segments", c.circle_segments);
+}
+
+// Calls f(section_name, section_struct) for every section.
 template <class F>
 void visit_sections(PipelineConfig& c, F&& f) {
   f("input", c.input);
@@ -131,6 +143,7 @@ void visit_sections(PipelineConfig& c, F&& f) {
   f("keypoints", c.keypoints);
   f("classify", c.classify);
   f("solve", c.solve);
+  f("ros2", c.ros2);
 }
 
 }  // namespace cloudshape::config

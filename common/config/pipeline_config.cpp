@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <set>
 #include <type_traits>
+#include <vector>
 #include <unistd.h>
 
 #include "config/config_fields.hpp"
@@ -34,6 +35,18 @@ void read_value(const YAML::Node& node, const std::string& path, const std::stri
                          : std::is_floating_point_v<T> ? "a number"
                                                        : "an integer"));
   }
+}
+
+// A list of names (ros2.input_topics): a YAML sequence of single values, [] for none.
+void read_value(const YAML::Node& node, const std::string& path, const std::string& key,
+                std::vector<std::string>& out) {
+  if (!node.IsSequence()) fail(path, key, "expected a list, e.g. [/camera/depth/points]");
+  std::vector<std::string> values;
+  for (std::size_t i = 0; i < node.size(); ++i) {
+    if (!node[i].IsScalar()) fail(path, key + "[" + std::to_string(i) + "]", "expected a single value");
+    values.push_back(node[i].as<std::string>());
+  }
+  out = std::move(values);
 }
 
 template <class Section>

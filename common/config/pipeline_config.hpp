@@ -1,10 +1,11 @@
-// Every tunable of the recognition pipeline (input limits, then one plain struct per stage), and the
-// loader that fills them from config/pipeline.yaml (unknown keys are rejected).
+// Every tunable of the recognition pipeline (input limits, one plain struct per stage, the ROS 2
+// topics and markers), and the loader that fills them from config/pipeline.yaml (unknown keys are rejected).
 #pragma once
 
 #include <stdexcept>
 #include <string>
 
+#include "config/ros2_config.hpp"
 #include "config/stage_configs.hpp"
 
 namespace cloudshape::config {
@@ -17,6 +18,7 @@ struct PipelineConfig {
   KeypointsConfig keypoints;
   ClassifyConfig classify;
   SolveConfig solve;
+  Ros2Config ros2;
 };
 
 // A configuration file that cannot be used: names the file, the key and the problem.

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <optional>
 #include <random>
-#include <unordered_set>
 
+#include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
 
 namespace cloudshape::segment {
@@ -59,6 +59,15 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     std::shuffle(sample.begin(), sample.end(), rng);
     sample.resize(kScoreSamples);
   }
+  // The sample's nodes side by side: every hypothesis scans them, is_inlier's test on a copy.
+  struct Scored {
+    Point node;
+    Eigen::Vector3d normal;
+    double limit;
+  };
+  std::vector<Scored> scored;
+  scored.reserve(sample.size());
+  for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
   geometry::Plane best;
   std::size_t best_score = 0;
@@ -68,7 +77,9 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
     std::size_t score = 0;
-    for (std::uint32_t n : sample) score += is_inlier(g, n, p, band, min_cos) ? 1 : 0;
+    for (const Scored& c : scored) {
+      score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
+    }
     if (score > best_score) {
       best_score = score;
       best = p;
@@ -93,16 +104,43 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   return fit;
 }
 
+// Distinct 64-bit keys numbered in order of arrival, on the flat cell map (whose empty-slot
+// marker, all bits set, is a key of its own here: the cell (-1, -1)).
+class KeyIndex {
+ public:
+  static constexpr std::uint32_t kAbsent = geometry::detail::CellMap::kAbsent;
+  explicit KeyIndex(std::size_t expected) : map_(expected) {}
+  std::uint32_t index(std::uint64_t key, bool& added) {
+    if (key == kAllOnes) {
+      added = all_ones_ == kAbsent;
+      if (added) all_ones_ = size_++;
+      return all_ones_;
+    }
+    const std::uint32_t i = map_.find_or_insert(key, size_, added);
+    if (added) ++size_;
+    return i;
+  }
+  std::uint32_t find(std::uint64_t key) const { return key == kAllOnes ? all_ones_ : map_.find(key); }
+  std::size_t size() const { return size_; }
+
+ private:
+  static constexpr std::uint64_t kAllOnes = ~std::uint64_t{0};
+  geometry::detail::CellMap map_;
+  std::uint32_t all_ones_ = kAbsent;
+  std::uint32_t size_ = 0;
+};
+
 // Cells of the plane's own 2-D frame occupied by the given nodes' projections.
 std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
                            const geometry::Plane& p, double cell) {
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
-  std::unordered_set<std::uint64_t> cells;
+  KeyIndex cells(nodes.size());
+  bool added = false;
   for (std::uint32_t n : nodes) {
     const auto cu = static_cast<std::int64_t>(std::floor(u.dot(g.nodes[n]) / cell));
     const auto cv = static_cast<std::int64_t>(std::floor(v.dot(g.nodes[n]) / cell));
-    cells.insert((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff));
+    cells.index((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff), added);
   }
   return cells.size();
 }
@@ -134,29 +172,39 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
                                                  static_cast<std::int64_t>(std::floor(v.dot(x) / cell))};
   };
   // Per row (fixed v) and per column (fixed u), the first and last plane cell.
-  std::unordered_map<std::int64_t, std::pair<std::int64_t, std::int64_t>> rows, cols;
-  const auto widen = [](auto& map, std::int64_t key, std::int64_t value) {
-    auto [it, added] = map.emplace(key, std::pair{value, value});
-    if (!added) {
-      it->second.first = std::min(it->second.first, value);
-      it->second.second = std::max(it->second.second, value);
+  struct Spans {
+    KeyIndex index;
+    std::vector<std::pair<std::int64_t, std::int64_t>> span;
+    void widen(std::int64_t key, std::int64_t value) {
+      bool added = false;
+      const std::uint32_t i = index.index(static_cast<std::uint64_t>(key), added);
+      if (added) {
+        span.emplace_back(value, value);
+      } else {
+        span[i].first = std::min(span[i].first, value);
+        span[i].second = std::max(span[i].second, value);
+      }
+    }
+    const std::pair<std::int64_t, std::int64_t>* find(std::int64_t key) const {
+      const std::uint32_t i = index.find(static_cast<std::uint64_t>(key));
+      return i == KeyIndex::kAbsent ? nullptr : &span[i];
     }
   };
+  Spans rows{KeyIndex(inliers.size()), {}}, cols{KeyIndex(inliers.size()), {}};
   for (std::uint32_t n : inliers) {
     const auto [cu, cv] = cell_of(g.nodes[n]);
-    widen(rows, cv, cu);
-    widen(cols, cu, cv);
+    rows.widen(cv, cu);
+    cols.widen(cu, cv);
   }
   std::size_t inside = 0;
   for (std::uint32_t n : contact) {
     const std::optional<Point> foot = foot_on_plane(g, n, p, min_slope);
     if (!foot) continue;
     const auto [cu, cv] = cell_of(*foot);
-    const auto r = rows.find(cv);
-    const auto c = cols.find(cu);
-    if (r == rows.end() || c == cols.end()) continue;
-    if (r->second.first <= cu - margin && r->second.second >= cu + margin && c->second.first <= cv - margin &&
-        c->second.second >= cv + margin) {
+    const auto* r = rows.find(cv);
+    const auto* c = cols.find(cu);
+    if (r == nullptr || c == nullptr) continue;
+    if (r->first <= cu - margin && r->second >= cu + margin && c->first <= cv - margin && c->second >= cv + margin) {
       ++inside;
     }
   }

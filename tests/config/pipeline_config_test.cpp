@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <string>
+#include <type_traits>
+#include <vector>
 #include <unistd.h>
 
 #include "config/config_fields.hpp"
@@ -13,11 +16,24 @@
 namespace cloudshape::config {
 namespace {
 
-std::map<std::string, double> flatten(PipelineConfig cfg) {
-  std::map<std::string, double> out;
+std::string as_text(double value) { return std::to_string(value); }
+std::string as_text(const std::string& value) { return "'" + value + "'"; }
+std::string as_text(const std::vector<std::string>& values) {
+  std::string out = "[";
+  for (const std::string& v : values) out += as_text(v) + ",";
+  return out + "]";
+}
+
+std::map<std::string, std::string> flatten(PipelineConfig cfg) {
+  std::map<std::string, std::string> out;
   visit_sections(cfg, [&](const char* section, auto& s) {
     visit_fields(s, [&](const char* key, auto& value) {
-      out[std::string(section) + "." + key] = static_cast<double>(value);
+      using T = std::decay_t<decltype(value)>;
+      if constexpr (std::is_arithmetic_v<T>) {
+        out[std::string(section) + "." + key] = as_text(static_cast<double>(value));
+      } else {
+        out[std::string(section) + "." + key] = as_text(value);
+      }
     });
   });
   return out;
@@ -80,6 +96,23 @@ TEST(PipelineConfig, WrongTypesAndNegativeValuesAreRejected) {
   EXPECT_NE(error_of("planes:\n  fine_threshold: abc\n").find("planes.fine_threshold"), std::string::npos);
   EXPECT_NE(error_of("planes:\n  max_planes: -3\n").find(">= 0"), std::string::npos);
   EXPECT_NE(error_of("preprocess:\n  smoothing: maybe\n").find("true/false"), std::string::npos);
+}
+
+TEST(PipelineConfig, Ros2TopicsAndNames) {
+  const std::string path = write_temp(
+      "ros2:\n  input_topics: [/camera/depth/points, /lidar/points]\n  markers_topic: \"\"\n"
+      "  file_frame_id: map\n");
+  const PipelineConfig cfg = load_pipeline_config(path);
+  std::filesystem::remove(path);
+  EXPECT_EQ(cfg.ros2.input_topics, (std::vector<std::string>{"/camera/depth/points", "/lidar/points"}));
+  EXPECT_EQ(cfg.ros2.markers_topic, "");
+  EXPECT_EQ(cfg.ros2.file_frame_id, "map");
+  EXPECT_EQ(cfg.ros2.detections_topic, Ros2Config{}.detections_topic);
+  EXPECT_NE(error_of("ros2:\n  input_topics: /camera/depth/points\n").find("ros2.input_topics: expected a list"),
+            std::string::npos);
+  EXPECT_NE(error_of("ros2:\n  input_topics: [[a]]\n").find("ros2.input_topics[0]"), std::string::npos);
+  EXPECT_NE(error_of("ros2:\n  markers_topic: [a]\n").find("ros2.markers_topic: expected a single value"),
+            std::string::npos);
 }
 
 TEST(PipelineConfig, MissingFileAndBrokenYamlNameTheFile) {

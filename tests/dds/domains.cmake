@@ -20,7 +20,11 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   security_wire 68
   security_forged 69
   faults_killed_inside_receive 70
-  faults_every_service_killed_inside_receive 71)
+  faults_every_service_killed_inside_receive 71
+  mcap_replay 72
+  mcap_replay_rate 73
+  mcap_record 74
+  mcap_replay_node 75)
 
 set(_names "")
 set(_ids "")

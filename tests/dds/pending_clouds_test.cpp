@@ -8,7 +8,7 @@ namespace cloudshape::inject {
 namespace {
 using namespace std::chrono_literals;
 
-PendingCloud cloud(std::uint64_t id, Clock::time_point sent) { return {id, "c.pcd", "c.pcd", 0, sent, 1}; }
+PendingCloud cloud(std::uint64_t id, Clock::time_point sent) { return {id, "c.pcd", std::nullopt, "c.pcd", 0, sent, 1}; }
 
 TEST(InjectPendingClouds, OverdueCloudsComeBackOldestFirst) {
   PendingClouds pending;

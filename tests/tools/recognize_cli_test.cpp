@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -319,6 +320,51 @@ TEST_F(RecognizeCli, PrettyPrintsTheSameObject) {
   j.erase("timings_ms");
   c.erase("timings_ms");
   EXPECT_EQ(j, c);  // the same answer both times, timings aside
+}
+
+// --format table: a header, then one line per object carrying what the JSON says (dimensions
+// to four significant digits); unreadable files still go to stderr and set the exit status.
+TEST_F(RecognizeCli, TableFormatGivesOneLinePerObjectWithTheJsonFigures) {
+  const std::vector<std::string> files = {path("box.xyz"), path("cylinder.ply"),
+                                          path("coplanar.xyz")};
+  std::vector<std::string> args = {"--format", "table"};
+  args.insert(args.end(), files.begin(), files.end());
+  args.push_back(path("missing.pcd"));
+  const ProcessResult table = run(args);
+  EXPECT_EQ(table.exit_code, 2) << table.err;
+  EXPECT_EQ(failures_for(table, path("missing.pcd")).size(), 1u) << table.err;
+  const auto rows = lines_of(table.out);
+  const auto json = results(run(files));
+  ASSERT_EQ(json.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u) << table.out;  // header + one object per cloud
+  EXPECT_EQ(rows[0].rfind("file", 0), 0u) << rows[0];
+  for (const char* column : {"shape", "dimensions", "confidence", "partial", "ms"})
+    EXPECT_NE(rows[0].find(column), std::string::npos) << column;
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const std::string& row = rows[i + 1];
+    std::istringstream words(row);
+    std::string source, shape;
+    words >> source >> shape;
+    const Json& o = json[i]["objects"][0];
+    EXPECT_EQ(source, json[i]["source"].get<std::string>()) << row;
+    EXPECT_EQ(shape, o["shape"].get<std::string>()) << row;
+    for (const auto& [name, value] : o["dimensions"].items()) {
+      const std::size_t at = row.find(" " + name + " ");
+      ASSERT_NE(at, std::string::npos) << name << " in: " << row;
+      const double shown = std::stod(row.substr(at + name.size() + 2));
+      EXPECT_NEAR(shown, value.get<double>(), 1e-3 * value.get<double>()) << name << ": " << row;
+    }
+    const std::string partial = o["partial"].get<bool>() ? " yes " : " no ";
+    EXPECT_NE(row.find(partial), std::string::npos) << row;
+  }
+  EXPECT_NE(rows[3].find("coplanar"), std::string::npos) << "the unknown's reason: " << rows[3];
+  EXPECT_EQ(table.out.find('{'), std::string::npos) << "no JSON in the table";
+}
+
+TEST_F(RecognizeCli, UnknownFormatIsACommandLineError) {
+  const ProcessResult r = run({"--format", "xml", path("box.xyz")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
 TEST_F(RecognizeCli, VerboseLogsStayOffStdout) {

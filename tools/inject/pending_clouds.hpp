@@ -1,5 +1,5 @@
 // The clouds cloudshape-inject sent whose complete result it has not seen yet: an overdue
-// cloud is sent again, so none is lost (README "No lost clouds").
+// cloud is sent again, so none is lost (docs/reliability.md "No lost clouds").
 #pragma once
 
 #include <chrono>
@@ -17,6 +17,7 @@ using Clock = std::chrono::steady_clock;
 struct PendingCloud {
   std::uint64_t id = 0;
   std::string path;            // read again to send it again: memory does not hold the points
+  std::optional<std::size_t> message;  // the PointCloud2 message of an .mcap path
   std::string source;          // header.source, with the id the key of its result
   std::int64_t inject_time_ns = 0;  // of the first attempt: latency counts the recovery
   Clock::time_point last_sent;
