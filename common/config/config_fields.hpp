@@ -43,6 +43,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_reach", c.structure_reach);
   f("structure_contact", c.structure_contact);
   f("structure_margin_cells", c.structure_margin_cells);
+  f("structure_contact_min_degrees", c.structure_contact_min_degrees);
   f("structure_min_standing", c.structure_min_standing);
   f("structure_hypotheses", c.structure_hypotheses);
   f("fragment_max_width", c.fragment_max_width);

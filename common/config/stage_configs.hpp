@@ -96,7 +96,8 @@ struct SegmentConfig {
   double structure_reach = 4.0;            // ... and covers at least this many times the area of what stands on it (a solid's face covers about its own solid)
   double structure_contact = 3.0;          // ... and what stands on it touches it (nodes within this many bands above it) ...
   std::int64_t structure_margin_cells = 3; // ... inside it: structure_min_standing of those have plane this many cells (2 node spacings) beyond them on all four sides
-  std::int64_t structure_min_standing = 20;  // nodes that must stand on the viewer's side of a plane for it to be structure
+  double structure_contact_min_degrees = 12.0;  // ... where it meets the plane (down its own slope): none for surfaces closer to parallel than this
+  std::int64_t structure_min_standing = 10;  // nodes that must stand on the viewer's side of a plane for it to be structure
   std::int64_t structure_hypotheses = 200; // RANSAC hypotheses per structure plane
   double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
   double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "geometry/detail/flat_hash.hpp"
@@ -144,18 +145,31 @@ std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint3
   return cells.size();
 }
 
-// How many of the `contact` nodes (what stands on the plane, where it meets it) lie inside the
-// plane: their projection has plane cells beyond it, at least `margin` cells away, in all four
-// in-plane directions. A table surrounds what stands on it (also beyond the shadow an object
-// casts), while a solid's other faces rise from its face's own edges, where the face ends.
+// Where a contact node's surface meets the plane: from the node down its own surface's steepest
+// slope to the plane. A side that leans over the plane (a cone's side over its own base) meets
+// it at the plane's edge although its nodes lie above the plane's inside; a wall-like side meets
+// it straight below. None for a node whose surface is nearly parallel to the plane.
+std::optional<Point> foot_on_plane(const NeighbourGraph& g, std::uint32_t n, const geometry::Plane& p,
+                                   double min_slope) {
+  const Eigen::Vector3d& s = g.normals[n];
+  const Eigen::Vector3d downhill = -(p.normal - p.normal.dot(s) * s);
+  const double slope = downhill.norm();  // sine of the angle between the surface and the plane
+  if (slope < min_slope) return std::nullopt;
+  return Point(g.nodes[n] + (p.signed_distance(g.nodes[n]) / (slope * slope)) * downhill);
+}
+
+// How many of the `contact` nodes (what stands on the plane, near it) meet it inside: where their
+// surface meets the plane (foot_on_plane) has plane cells beyond it, at least `margin` cells
+// away, in all four in-plane directions. A table surrounds what stands on it (also beyond the
+// shadow an object casts), while a solid's other faces rise from its face's own edges.
 std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint32_t>& inliers,
                             const std::vector<std::uint32_t>& contact, const geometry::Plane& p, double cell,
-                            int margin) {
+                            int margin, double min_slope) {
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
-  const auto cell_of = [&](std::uint32_t n) {
-    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(u.dot(g.nodes[n]) / cell)),
-                                                 static_cast<std::int64_t>(std::floor(v.dot(g.nodes[n]) / cell))};
+  const auto cell_of = [&](const Point& x) {
+    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(u.dot(x) / cell)),
+                                                 static_cast<std::int64_t>(std::floor(v.dot(x) / cell))};
   };
   // Per row (fixed v) and per column (fixed u), the first and last plane cell.
   struct Spans {
@@ -178,13 +192,15 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
   };
   Spans rows{KeyIndex(inliers.size()), {}}, cols{KeyIndex(inliers.size()), {}};
   for (std::uint32_t n : inliers) {
-    const auto [cu, cv] = cell_of(n);
+    const auto [cu, cv] = cell_of(g.nodes[n]);
     rows.widen(cv, cu);
     cols.widen(cu, cv);
   }
   std::size_t inside = 0;
   for (std::uint32_t n : contact) {
-    const auto [cu, cv] = cell_of(n);
+    const std::optional<Point> foot = foot_on_plane(g, n, p, min_slope);
+    if (!foot) continue;
+    const auto [cu, cv] = cell_of(*foot);
     const auto* r = rows.find(cv);
     const auto* c = cols.find(cu);
     if (r == nullptr || c == nullptr) continue;
@@ -258,7 +274,8 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
-    const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells);
+    const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells,
+                                               std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
     const bool structure = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
     if (!structure) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
