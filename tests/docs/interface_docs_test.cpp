@@ -22,10 +22,18 @@ using Keys = std::map<std::string, std::vector<std::string>>;
 const std::string kRecognizerDoc = std::string(CLOUDSHAPE_SOURCE_DIR) + "/docs/recognizer.md";
 const std::string kInterface = std::string(CLOUDSHAPE_SOURCE_DIR) + "/../shared/INTERFACE.md";
 
-// INTERFACE.md: the bullets under "- `dimensions`, by shape", one "  - shape: `key` ..." each.
+// INTERFACE.md: the bullets under "- `dimensions`, by shape", one "  - shape: `key` ..." each,
+// continuation lines (indented four spaces) included.
 Keys interface_dimensions() {
   Keys keys;
   bool in_list = false;
+  std::string shape;  // of the bullet being read: its continuation lines state keys too
+  std::string stated;
+  const auto finish = [&] {
+    if (!shape.empty()) keys[shape] = names_stated(stated);
+    shape.clear();
+    stated.clear();
+  };
   for (const auto& line : read_lines(kInterface)) {
     if (line.rfind("- `dimensions`, by shape", 0) == 0) {
       in_list = true;
@@ -33,13 +41,19 @@ Keys interface_dimensions() {
     }
     if (!in_list) continue;
     if (line.rfind("  - ", 0) != 0) {
-      if (line.rfind("    ", 0) == 0) continue;  // a bullet's continuation line
+      if (line.rfind("    ", 0) == 0) {
+        stated += " " + line;
+        continue;
+      }
       break;
     }
+    finish();
     const std::size_t colon = line.find(':');
     if (colon == std::string::npos) continue;
-    keys[line.substr(4, colon - 4)] = names_stated(line.substr(colon + 1));
+    shape = line.substr(4, colon - 4);
+    stated = line.substr(colon + 1);
   }
+  finish();
   return keys;
 }
 
