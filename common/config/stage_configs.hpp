@@ -127,7 +127,7 @@ struct SolveConfig {
   double polyhedron_face_share = 0.5;    // tetrahedron and prism fits: planes along their faces hold at least this share of the points (prism sides: of the points of planes around the axis)
   std::int64_t extent_hull_samples = 2000;  // points the extent's minimum-area rectangles are chosen from (its bounds take every point)
   double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
-  double frustum_min_taper = 0.08;       // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
+  double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
   double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
   double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
 };

@@ -35,8 +35,9 @@ void check(const Case& c, double noise, std::uint64_t seed, double tolerance) {
   EXPECT_FALSE(o.partial);
 }
 
-// A bucket, a lamp shade, a squat cup, a nearly-cylindrical tumbler (taper 20%).
-const std::vector<Case> kCases = {{40, 28, 60}, {50, 20, 40}, {45, 35, 25}, {30, 24, 90}};
+// A bucket, a lamp shade, a squat cup, a nearly-cylindrical tumbler (taper 25%: a taper under
+// solve.frustum_min_taper, 20%, is named cylinder, as one noisy view of a can can show that much).
+const std::vector<Case> kCases = {{40, 28, 60}, {50, 20, 40}, {45, 35, 25}, {32, 24, 90}};
 
 TEST(FrustumParameters, Whole) {
   std::uint64_t seed = 100;
