@@ -20,7 +20,11 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   security_wire 68
   security_forged 69
   faults_killed_inside_receive 70
-  faults_every_service_killed_inside_receive 71)
+  faults_every_service_killed_inside_receive 71
+  ros2_cyclone 72
+  ros2_fastdds 73
+  ros2_bad_clouds 74
+  ros2_latency 75)
 
 set(_names "")
 set(_ids "")

@@ -1,0 +1,158 @@
+// Writes the PointCloud2 fuzz seeds (tests/fuzz/corpus/pointcloud2/*.cdr) from the generated ROS 2
+// type: every layout ingest takes and every bad one it refuses. `fuzz_pointcloud2_seeds DIR`.
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fastdds/rtps/common/SerializedPayload.h>
+
+#include "io/pointcloud2_encode.hpp"
+#include "ros2/messages.hpp"
+#include "sensor_msgsPubSubTypes.h"
+#include "synth/random_solid.hpp"
+#include "synth/sample_solid.hpp"
+
+namespace {
+namespace cs = cloudshape;
+using cs::io::PointCloud2;
+
+cs::PointList box(std::size_t n) {
+  std::mt19937_64 rng(7);
+  return cs::synth::sample_solid_surface(cs::synth::random_solid(cs::synth::ShapeKind::box, rng, 4.0), n, rng);
+}
+
+const cs::io::RosHeader kHeader{{17, 42}, "camera"};
+
+PointCloud2 flat(const cs::io::PointCloud2Layout& layout = {}) {
+  return cs::io::encode_pointcloud2(box(150), {}, layout, kHeader);
+}
+
+// 150 box points at every other pixel of a 20 x 16 image (a depth frame with holes).
+PointCloud2 organized(const cs::io::PointCloud2Layout& layout = {}) {
+  cs::GridLayout grid;
+  grid.width = 20;
+  grid.height = 16;
+  for (std::uint32_t i = 0; i < 150; ++i) grid.pixel.push_back(2 * i);
+  return cs::io::encode_pointcloud2(box(150), grid, layout, kHeader);
+}
+
+struct Seed {
+  std::string name;
+  std::function<PointCloud2()> make;
+};
+
+std::vector<Seed> seeds() {
+  cs::io::PointCloud2Layout odd = cs::io::float64_layout();
+  odd.offsets = {20, 4, 36};
+  odd.rgb_offset = 0;
+  odd.point_step = 47;
+  odd.row_padding = 13;
+  cs::io::PointCloud2Layout big;
+  big.big_endian = true;
+  cs::io::PointCloud2Layout big64 = cs::io::float64_layout();
+  big64.big_endian = true;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  return {
+      {"float32_rgb", [] { return flat(); }},
+      {"float64", [] { return flat(cs::io::float64_layout()); }},
+      {"float64_odd_offsets_padded", [=] { return flat(odd); }},
+      {"float32_big_endian", [=] { return flat(big); }},
+      {"organized_float32", [] { return organized(); }},
+      {"organized_float64_big_endian", [=] { return organized(big64); }},
+      {"nan_and_inf",
+       [=] {
+         cs::PointList p = box(150);
+         p[3].x() = nan;
+         p[9].z() = std::numeric_limits<double>::infinity();
+         return cs::io::encode_pointcloud2(p, {}, {}, kHeader);
+       }},
+      {"extra_fields",
+       [] {
+         cs::io::PointCloud2Layout wide;
+         wide.point_step = 32;
+         PointCloud2 c = flat(wide);
+         for (std::uint8_t t = 1; t <= 8; ++t) c.fields.push_back({"f" + std::to_string(t), 16u + 2u * t, t, 1});
+         return c;
+       }},
+      {"empty", [] { return cs::io::encode_pointcloud2({}, {}, {}, kHeader); }},
+      {"no_z",
+       [] {
+         PointCloud2 c = flat();
+         c.fields[2].name = "depth";
+         return c;
+       }},
+      {"offset_past_point_step",
+       [] {
+         PointCloud2 c = flat();
+         c.fields[3].offset = 14;
+         return c;
+       }},
+      {"count_past_point_step",
+       [] {
+         PointCloud2 c = flat();
+         c.fields[1].count = 4;
+         return c;
+       }},
+      {"data_short",
+       [] {
+         PointCloud2 c = flat();
+         c.data.resize(c.data.size() - 5);
+         return c;
+       }},
+      {"height_disagrees",
+       [] {
+         PointCloud2 c = flat();
+         c.height = 2;
+         return c;
+       }},
+      {"row_step_short",
+       [] {
+         PointCloud2 c = organized();
+         c.row_step -= 1;
+         return c;
+       }},
+      {"int16_x",
+       [] {
+         PointCloud2 c = flat();
+         c.fields[0].datatype = 3;
+         return c;
+       }},
+      {"unknown_datatype",
+       [] {
+         PointCloud2 c = flat();
+         c.fields[3].datatype = 11;
+         return c;
+       }},
+  };
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: fuzz_pointcloud2_seeds DIR   (writes DIR/<seed>.cdr)\n");
+    return 2;
+  }
+  for (const Seed& seed : seeds()) {
+    sensor_msgs::msg::PointCloud2 m = cs::ros2::to_msg(seed.make());
+    sensor_msgs::msg::PointCloud2PubSubType type;
+    eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(&m)());
+    if (!type.serialize(&m, &payload)) {
+      std::fprintf(stderr, "fuzz_pointcloud2_seeds: %s does not serialize\n", seed.name.c_str());
+      return 1;
+    }
+    const std::string path = std::string(argv[1]) + "/" + seed.name + ".cdr";
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(payload.data), payload.length);
+    if (!out) {
+      std::fprintf(stderr, "fuzz_pointcloud2_seeds: cannot write %s\n", path.c_str());
+      return 1;
+    }
+  }
+  return 0;
+}
