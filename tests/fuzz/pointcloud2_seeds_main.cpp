@@ -2,17 +2,15 @@
 // type: every layout ingest takes and every bad one it refuses. `fuzz_pointcloud2_seeds DIR`.
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
-#include <fastdds/rtps/common/SerializedPayload.h>
-
 #include "io/pointcloud2_encode.hpp"
 #include "ros2/messages.hpp"
+#include "seed_file.hpp"
 #include "sensor_msgsPubSubTypes.h"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -39,6 +37,12 @@ PointCloud2 organized(const cs::io::PointCloud2Layout& layout = {}) {
   grid.height = 16;
   for (std::uint32_t i = 0; i < 150; ++i) grid.pixel.push_back(2 * i);
   return cs::io::encode_pointcloud2(box(150), grid, layout, kHeader);
+}
+
+// `cloud` with one thing broken by `spoil`.
+PointCloud2 spoiled(PointCloud2 cloud, const std::function<void(PointCloud2&)>& spoil) {
+  spoil(cloud);
+  return cloud;
 }
 
 struct Seed {
@@ -81,53 +85,21 @@ std::vector<Seed> seeds() {
        }},
       {"empty", [] { return cs::io::encode_pointcloud2({}, {}, {}, kHeader); }},
       {"no_z",
-       [] {
-         PointCloud2 c = flat();
-         c.fields[2].name = "depth";
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.fields[2].name = "depth"; }); }},
       {"offset_past_point_step",
-       [] {
-         PointCloud2 c = flat();
-         c.fields[3].offset = 14;
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.fields[3].offset = 14; }); }},
       {"count_past_point_step",
-       [] {
-         PointCloud2 c = flat();
-         c.fields[1].count = 4;
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.fields[1].count = 4; }); }},
       {"data_short",
-       [] {
-         PointCloud2 c = flat();
-         c.data.resize(c.data.size() - 5);
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.data.resize(c.data.size() - 5); }); }},
       {"height_disagrees",
-       [] {
-         PointCloud2 c = flat();
-         c.height = 2;
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.height = 2; }); }},
       {"row_step_short",
-       [] {
-         PointCloud2 c = organized();
-         c.row_step -= 1;
-         return c;
-       }},
+       [] { return spoiled(organized(), [](PointCloud2& c) { c.row_step -= 1; }); }},
       {"int16_x",
-       [] {
-         PointCloud2 c = flat();
-         c.fields[0].datatype = 3;
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.fields[0].datatype = 3; }); }},
       {"unknown_datatype",
-       [] {
-         PointCloud2 c = flat();
-         c.fields[3].datatype = 11;
-         return c;
-       }},
+       [] { return spoiled(flat(), [](PointCloud2& c) { c.fields[3].datatype = 11; }); }},
   };
 }
 
@@ -140,17 +112,7 @@ int main(int argc, char** argv) {
   }
   for (const Seed& seed : seeds()) {
     sensor_msgs::msg::PointCloud2 m = cs::ros2::to_msg(seed.make());
-    sensor_msgs::msg::PointCloud2PubSubType type;
-    eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(&m)());
-    if (!type.serialize(&m, &payload)) {
-      std::fprintf(stderr, "fuzz_pointcloud2_seeds: %s does not serialize\n", seed.name.c_str());
-      return 1;
-    }
-    const std::string path = std::string(argv[1]) + "/" + seed.name + ".cdr";
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(payload.data), payload.length);
-    if (!out) {
-      std::fprintf(stderr, "fuzz_pointcloud2_seeds: cannot write %s\n", path.c_str());
+    if (!cs::fuzz::write_seed<sensor_msgs::msg::PointCloud2PubSubType>(argv[1], seed.name, m, "fuzz_pointcloud2_seeds")) {
       return 1;
     }
   }
