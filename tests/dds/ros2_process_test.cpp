@@ -13,6 +13,7 @@
 #include <iostream>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <thread>
 
 #include "corrupt_sample.hpp"
 #include "dds/endpoints.hpp"
@@ -265,6 +266,8 @@ TEST(DdsRos2, FastDdsDefaultProfilePublisherAndALateReader) {
   RosNode node(p);
   start_services(p);
   ASSERT_TRUE(node.wait_for_ingest()) << read_text(p.log_path("ingest"));
+  // The late reader is a participant of its own, as RViz started later would be.
+  std::unique_ptr<dds::Participant> late_participant;
   std::unique_ptr<dds::Reader<dds::DetectionsTopic>> late;
   dds::DetectionsTopic late_spec{"rt/cloudshape/detections"};
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -283,8 +286,19 @@ TEST(DdsRos2, FastDdsDefaultProfilePublisherAndALateReader) {
       }
       EXPECT_TRUE(found) << "the late reader missed " << frames[i].name;
     }
-    if (i == 0) late = std::make_unique<dds::Reader<dds::DetectionsTopic>>(node.participant(), late_spec,
-                                                                            dds::Traffic::ros2_default);
+    if (i == 0) {
+      const auto joined = std::chrono::steady_clock::now();
+      late_participant = std::make_unique<dds::Participant>(std::stoi(p.domain()), "ros2-test-late-reader");
+      late = std::make_unique<dds::Reader<dds::DetectionsTopic>>(*late_participant, late_spec,
+                                                                 dds::Traffic::ros2_default);
+      while (late->matched_writers() == 0 && std::chrono::steady_clock::now() - joined < 30s) {
+        std::this_thread::sleep_for(10ms);
+      }
+      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - joined).count();
+      std::cout << "the late reader matched the solver's writer " << ms << " ms after it joined\n";
+      // The issue asks for a second; the budget allows for a loaded machine.
+      EXPECT_LT(ms, 5000.0);
+    }
   }
   p.stop_services();
 }
