@@ -92,6 +92,14 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   return fit;
 }
 
+// The cell of an in-plane coordinate; clamped, since a node spacing near zero makes the quotient
+// overflow any integer (found by fuzzing PointCloud2 input: a cast of infinity is undefined).
+std::int64_t cell_index(double coordinate, double cell) {
+  constexpr double kLimit = 4.0e18;
+  const double index = std::floor(coordinate / cell);
+  return static_cast<std::int64_t>(std::isnan(index) ? 0.0 : std::clamp(index, -kLimit, kLimit));
+}
+
 // Cells of the plane's own 2-D frame occupied by the given nodes' projections.
 std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
                            const geometry::Plane& p, double cell) {
@@ -99,8 +107,8 @@ std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint3
   geometry::plane_basis(p.normal, u, v);
   std::unordered_set<std::uint64_t> cells;
   for (std::uint32_t n : nodes) {
-    const auto cu = static_cast<std::int64_t>(std::floor(u.dot(g.nodes[n]) / cell));
-    const auto cv = static_cast<std::int64_t>(std::floor(v.dot(g.nodes[n]) / cell));
+    const std::int64_t cu = cell_index(u.dot(g.nodes[n]), cell);
+    const std::int64_t cv = cell_index(v.dot(g.nodes[n]), cell);
     cells.insert((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff));
   }
   return cells.size();
@@ -116,8 +124,7 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
   const auto cell_of = [&](std::uint32_t n) {
-    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(u.dot(g.nodes[n]) / cell)),
-                                                 static_cast<std::int64_t>(std::floor(v.dot(g.nodes[n]) / cell))};
+    return std::pair<std::int64_t, std::int64_t>{cell_index(u.dot(g.nodes[n]), cell), cell_index(v.dot(g.nodes[n]), cell)};
   };
   // Per row (fixed v) and per column (fixed u), the first and last plane cell.
   std::unordered_map<std::int64_t, std::pair<std::int64_t, std::int64_t>> rows, cols;
@@ -207,6 +214,11 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       if (height > cfg.structure_band && height <= cfg.structure_contact * cfg.structure_band) contact.push_back(n);
     }
     const double cell = 2.0 * median_spacing(g, fit.inliers);
+    // Nodes of no spacing (one repeated point) span no area to compare.
+    if (!(cell > 0.0)) {
+      for (std::uint32_t n : fit.inliers) tried[n] = 1;
+      continue;
+    }
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
