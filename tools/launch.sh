@@ -2,6 +2,7 @@
 # Starts / stops the five cloudshape DDS services natively, logs in files (one per service).
 #
 #   tools/launch.sh start [--domain N] [--replicas STAGE=N]... [--config FILE] [--security DIR]
+#                         [--ros-topic TOPIC]...    # ingest also reads ROS 2 PointCloud2 on TOPIC
 #   tools/launch.sh stop            # SIGTERM each service, SIGKILL after 30 s
 #   tools/launch.sh status          # a few status samples (cloudshape-echo --status)
 #   tools/launch.sh run [...]       # start, then stop on Ctrl-C (foreground)
@@ -25,7 +26,7 @@ bin="$CLOUDSHAPE_BUILD_DIR/bin"
 logs="${CLOUDSHAPE_LOG_DIR:-$CLOUDSHAPE_BUILD_DIR/logs}"
 pids="$logs/services.pids"
 
-usage() { sed -n '2,17s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
+usage() { sed -n '2,18s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 
 upstream_of() {  # the stage that publishes what $1 reads
   case "$1" in
@@ -37,11 +38,13 @@ upstream_of() {  # the stage that publishes what $1 reads
 start() {
   local domain="${CLOUDSHAPE_DOMAIN:-0}" config="" security="${CLOUDSHAPE_SECURITY_DIR:-}" spec stage n
   declare -A replicas=()
+  local -a ros=()
   while (($#)); do
     case "$1" in
       --domain) domain="$2"; shift ;;
       --config) config="$2"; shift ;;
       --security) security="$2"; shift ;;
+      --ros-topic) ros+=(--ros-topic "$2"); shift ;;
       --replicas)
         spec="$2"; stage="${spec%%=*}"; n="${spec#*=}"
         [[ " ${STAGES[*]} " == *" $stage "* && "$n" =~ ^[1-9][0-9]*$ ]] || cs_die "bad --replicas $spec"
@@ -65,10 +68,12 @@ start() {
     for down in "${STAGES[@]}"; do
       [[ "$(upstream_of "$down")" == "$s" ]] && subs="${replicas[$down]:-1}"
     done
+    local -a own=()
+    [[ "$s" != ingest ]] || own=("${ros[@]}")
     for ((lane = 0; lane < lanes; lane++)); do
       local name="$s"
       ((lanes == 1)) || name="$s-$lane"
-      "$bin/cloudshape-$s" "${common[@]}" --lane "$lane" --lanes "$lanes" --subscribers "$subs" \
+      "$bin/cloudshape-$s" "${common[@]}" "${own[@]}" --lane "$lane" --lanes "$lanes" --subscribers "$subs" \
         >>"$logs/$name.log" 2>&1 &
       printf '%s %s\n' "$!" "$name" >>"$pids"
       cs_log "started $name (pid $!, domain $domain, security ${security:-off}, log $logs/$name.log)"

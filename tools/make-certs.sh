@@ -31,18 +31,19 @@ days=3650
 domain_min=0
 domain_max=232
 
-# Who publishes and subscribes what (the topic table of README "DDS topics").
+# Who publishes and subscribes what (the topic table of README "DDS topics"; ROS 2 topics:
+# docs/ros2.md, their default names).
 declare -A publishes=(
   [cloudshape-ingest]="cloudshape_filtered_cloud cloudshape_status"
   [cloudshape-planes]="cloudshape_planes cloudshape_status"
   [cloudshape-keypoints]="cloudshape_keypoints cloudshape_status"
   [cloudshape-classifier]="cloudshape_classified cloudshape_status"
-  [cloudshape-solver]="cloudshape_result cloudshape_status"
+  [cloudshape-solver]="cloudshape_result cloudshape_status rt/cloudshape/detections rt/cloudshape/markers"
   [cloudshape-inject]="cloudshape_raw_cloud"
   [cloudshape-echo]=""
 )
 declare -A subscribes=(
-  [cloudshape-ingest]="cloudshape_raw_cloud"
+  [cloudshape-ingest]="cloudshape_raw_cloud rt/*"  # rt/*: any ROS 2 PointCloud2 topic (--ros-topic)
   [cloudshape-planes]="cloudshape_filtered_cloud"
   [cloudshape-keypoints]="cloudshape_planes"
   [cloudshape-classifier]="cloudshape_keypoints"
@@ -107,8 +108,10 @@ write_signed() {
 
 topic_list() {
   local t
+  local -a topics
+  read -r -a topics <<<"$1"  # split on spaces without expanding rt/* as a file pattern
   printf '<topics>'
-  for t in $1; do printf '<topic>%s</topic>' "$t"; done
+  for t in "${topics[@]}"; do printf '<topic>%s</topic>' "$t"; done
   printf '</topics>'
 }
 

@@ -42,17 +42,18 @@ sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recogniti
                 io_pcd_reader_test io_pcd_errors_test io_ply_reader_test io_xyz_reader_test
                 io_cloud_reader_test io_cloud_writers_test io_labelled_pcd_writer_test io_mesh_reader_test io_robustness_test
                 io_real_data_test io_mcap_reader_test io_mcap_errors_test io_mcap_clouds_test recording_test
-                fuzz_regressions_test dds_ingest_sample_test dds_convert_test
+                io_pointcloud2_test fuzz_regressions_test dds_ingest_sample_test
+                dds_ingest_ros_cloud_test ros2_messages_test dds_convert_test
                 dds_socket_buffers_test dds_participant_cli_test recognize_cli_test recognize_mcap_cli_test
                 synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test
                 render_geometry_test render_png_test recognize_render_cli_test)
 # ... and the process-level tests (ctest names) whose programs then run sanitized: the five
-# services, inject and echo (DDS pipeline and crafted samples), recognize, and cloudshape-synth's
+# services, inject and echo (DDS pipeline, crafted samples, ROS 2 clouds), recognize, and cloudshape-synth's
 # shape, suite and mesh commands. Left out for the CI's time budget: the fault and soak tests
 # (the same programs, longer) and the security tests (their participant set-up is sanitized
 # only through dds_participant_cli_test).
-sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test mesh_view_cli_test cloudshape-synth)
-sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
+sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test dds_ros2_test mesh_view_cli_test cloudshape-synth)
+sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|DdsRos2\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
 if ((sanitize)); then
   ((long == 0 && bench == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
   [[ -n "${CLOUDSHAPE_BUILD_DIR_SET:-}" ]] || CLOUDSHAPE_BUILD_DIR="$CLOUDSHAPE_REPO/build-sanitize"

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "cloudshape.h"
 
@@ -50,12 +51,20 @@ void mark_undecodable(Message& m, const std::string& problem,
   h.error_text(text);
 }
 
+// Whether M is a pipeline message (its header() is a CloudHeader): only those can carry an error.
+template <class M, class = void>
+struct is_cloud_message : std::false_type {};
+template <class M>
+struct is_cloud_message<M, std::void_t<decltype(std::declval<M&>().header())>>
+    : std::is_same<std::decay_t<decltype(std::declval<M&>().header())>, msg::CloudHeader> {};
+
 template <class Spec>
 class CheckedPubSubType : public Spec::PubSubType {
  public:
   // True when the reader is to deliver the sample: it deserialized, or it is a cloud message that
   // did not and is now its cloud's error sample. Fast DDS drops a sample whose deserialize
-  // returns false (its cloud would end in no result at all); a bad status sample is dropped so.
+  // returns false (its cloud would end in no result at all); a bad status sample or ROS 2 result
+  // is dropped so (ingest's PointCloud2 type keeps its own: dds/ros2_topics.hpp).
   bool deserialize(eprosima::fastrtps::rtps::SerializedPayload_t* payload, void* data) override {
     std::string problem = "it ends too early";
     try {
@@ -64,7 +73,7 @@ class CheckedPubSubType : public Spec::PubSubType {
       problem = e.what();
     }
     using Message = typename Spec::Message;
-    if constexpr (std::is_same_v<Message, msg::ServiceStatus>) {
+    if constexpr (!is_cloud_message<Message>::value) {
       *static_cast<Message*>(data) = Message();  // nothing half-read, should it be delivered
       return false;
     } else {

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <atomic>
+#include <string>
 #include <chrono>
+#include <fastdds/dds/core/condition/StatusCondition.hpp>
 #include <fastdds/dds/core/status/PublicationMatchedStatus.hpp>
 #include <fastdds/dds/core/status/SubscriptionMatchedStatus.hpp>
 #include <fastdds/dds/subscriber/SampleInfo.hpp>
@@ -19,7 +21,7 @@ class Writer {
   using Message = typename Spec::Message;
 
   Writer(Participant& p, const Spec& spec, Traffic traffic = Traffic::data)
-      : participant_(p), writer_(p.create_writer(p.topic(spec), traffic)) {}
+      : participant_(p), topic_(spec.name), writer_(p.create_writer(p.topic(spec), traffic)) {}
   ~Writer() { participant_.delete_writer(writer_); }
   Writer(const Writer&) = delete;
   Writer& operator=(const Writer&) = delete;
@@ -32,6 +34,8 @@ class Writer {
     }
     return true;
   }
+
+  const std::string& topic() const { return topic_; }
 
   int matched_readers() const {
     eprosima::fastdds::dds::PublicationMatchedStatus s;
@@ -61,6 +65,7 @@ class Writer {
 
  private:
   Participant& participant_;
+  std::string topic_;
   eprosima::fastdds::dds::DataWriter* writer_;
 };
 
@@ -75,11 +80,14 @@ class Reader {
   Reader(const Reader&) = delete;
   Reader& operator=(const Reader&) = delete;
 
-  // Takes the next sample, waiting up to `timeout`; false when none came.
-  bool take(Message& m, std::chrono::milliseconds timeout) {
+  // Takes the next sample, waiting up to `timeout`; false when none came. `info`, when given,
+  // receives the sample's DDS information (writer, sequence number, source timestamp).
+  bool take(Message& m, std::chrono::milliseconds timeout,
+            eprosima::fastdds::dds::SampleInfo* info_out = nullptr) {
     for (;;) {
       eprosima::fastdds::dds::SampleInfo info;
       if (reader_->take_next_sample(&m, &info) == ReturnCode_t::RETCODE_OK) {
+        if (info_out != nullptr) *info_out = info;
         if (info.valid_data) return true;
         continue;  // a lifecycle notice (writer gone), not data
       }
@@ -90,6 +98,13 @@ class Reader {
       }
       timeout = std::chrono::milliseconds(0);
     }
+  }
+
+  // Triggers while a sample waits to be taken (for a WaitSet over several readers).
+  eprosima::fastdds::dds::Condition& data_available() {
+    eprosima::fastdds::dds::StatusCondition& c = reader_->get_statuscondition();
+    c.set_enabled_statuses(eprosima::fastdds::dds::StatusMask::data_available());
+    return c;
   }
 
   int matched_writers() const {

@@ -48,22 +48,30 @@ RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputC
       ++out.non_finite_dropped;
     }
   }
-  if (out.points.empty()) {
-    throw RawCloudError("no usable points (all " + std::to_string(count) +
-                        " points have NaN or infinite coordinates)");
-  }
-  const std::size_t far = first_point_beyond(out.points, limits.max_coordinate);
-  if (far < out.points.size()) {
-    std::ostringstream text;
-    text << "a point at (" << out.points[far].transpose() << "), beyond input.max_coordinate "
-         << limits.max_coordinate;
-    throw RawCloudError(text.str());
-  }
+  check_usable_points(out, count, limits);
   return out;
 }
 
+void check_usable_points(const RawCloudPoints& cloud, std::size_t count, const config::InputConfig& limits) {
+  if (cloud.points.empty()) {
+    throw RawCloudError("no usable points (all " + std::to_string(count) +
+                        " points have NaN or infinite coordinates)");
+  }
+  const std::size_t far = first_point_beyond(cloud.points, limits.max_coordinate);
+  if (far < cloud.points.size()) {
+    std::ostringstream text;
+    text << "a point at (" << cloud.points[far].transpose() << "), beyond input.max_coordinate "
+         << limits.max_coordinate;
+    throw RawCloudError(text.str());
+  }
+}
+
 std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
-  const RawCloudPoints raw = raw_cloud_points(in, cfg.input);
+  return filtered_clouds(in.header(), raw_cloud_points(in, cfg.input), cfg);
+}
+
+std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, const RawCloudPoints& raw,
+                                                const config::PipelineConfig& cfg) {
   const auto start = std::chrono::steady_clock::now();
   const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, raw.grid, cfg.preprocess, cfg.segment);
   const std::vector<pipeline::ObjectCloud>& objects = clouds.objects;
@@ -73,7 +81,7 @@ std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const 
   const std::size_t count = objects.size();
   for (std::size_t i = 0; i < std::max<std::size_t>(count, 1); ++i) {
     msg::FilteredCloud o;
-    o.header(in.header());
+    o.header(header);
     o.header().object_index(static_cast<std::uint32_t>(i));
     o.header().object_count(static_cast<std::uint32_t>(count));
     o.header().timings().preprocess_ms(ms);
@@ -86,8 +94,12 @@ std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const 
 }
 
 msg::FilteredCloud refused_raw_cloud(const msg::RawCloud& in, const std::string& stage, const std::string& text) {
+  return refused_cloud(in.header(), stage, text);
+}
+
+msg::FilteredCloud refused_cloud(const msg::CloudHeader& header, const std::string& stage, const std::string& text) {
   msg::FilteredCloud out;
-  out.header(in.header());
+  out.header(header);
   out.header().object_index(0);
   out.header().object_count(1);
   out.header().error(true);

@@ -23,12 +23,21 @@ struct RawCloudPoints {
 // (raw_cloud_layout), no finite point, or a point beyond limits.max_coordinate.
 RawCloudPoints raw_cloud_points(const msg::RawCloud& cloud, const config::InputConfig& limits);
 
-// One filtered cloud per object of `in`, object_index/object_count set (one with object_count 0
-// when preprocessing finds no object). Throws RawCloudError as raw_cloud_points does.
+// Throws RawCloudError when `cloud` (of `count` points sent, NaN ones included) kept no finite
+// point or holds a point beyond limits.max_coordinate.
+void check_usable_points(const RawCloudPoints& cloud, std::size_t count, const config::InputConfig& limits);
+
+// One filtered cloud per object of `cloud`, each with `header` and object_index/object_count set
+// (one with object_count 0 when preprocessing finds no object), as recognize_cloud splits it.
+std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, const RawCloudPoints& cloud,
+                                                const config::PipelineConfig& cfg);
+
+// raw_cloud_points, then filtered_clouds. Throws RawCloudError as raw_cloud_points does.
 std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg);
 
-// The one message a refused raw cloud becomes: its header marked failed by `stage` with `text`,
-// as the cloud's single object (a raw cloud's own object fields mean nothing).
+// The one message a refused cloud becomes: `header` marked failed by `stage` with `text`, as the
+// cloud's single object (a raw cloud's own object fields mean nothing).
+msg::FilteredCloud refused_cloud(const msg::CloudHeader& header, const std::string& stage, const std::string& text);
 msg::FilteredCloud refused_raw_cloud(const msg::RawCloud& in, const std::string& stage, const std::string& text);
 
 }  // namespace cloudshape::dds

@@ -16,10 +16,22 @@ namespace {
 constexpr const char* kDefaultParticipantProfile = "cloudshape_localhost";
 
 const char* writer_profile(Traffic t) {
-  return t == Traffic::data ? "cloudshape_data_writer" : "cloudshape_status_writer";
+  switch (t) {
+    case Traffic::data: return "cloudshape_data_writer";
+    case Traffic::status: return "cloudshape_status_writer";
+    case Traffic::ros2_sensor_data: return "cloudshape_ros2_sensor_data_writer";
+    case Traffic::ros2_default: return "cloudshape_ros2_default_writer";
+  }
+  return "";
 }
 const char* reader_profile(Traffic t) {
-  return t == Traffic::data ? "cloudshape_data_reader" : "cloudshape_status_reader";
+  switch (t) {
+    case Traffic::data: return "cloudshape_data_reader";
+    case Traffic::status: return "cloudshape_status_reader";
+    case Traffic::ros2_sensor_data: return "cloudshape_ros2_sensor_data_reader";
+    case Traffic::ros2_default: return "cloudshape_ros2_default_reader";
+  }
+  return "";
 }
 
 // Loads the XML once per process; a file that does not parse is an error, not a silent default.

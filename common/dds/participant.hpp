@@ -36,8 +36,9 @@ std::string participant_profile();
 // The participant QoS of a profile of qos.xml (loaded first). Throws DdsError when absent.
 eprosima::fastdds::dds::DomainParticipantQos participant_qos(const std::string& profile);
 
-// Which endpoint QoS profile of qos.xml an endpoint uses.
-enum class Traffic { data, status };
+// Which endpoint QoS profile of qos.xml an endpoint uses: the pipeline's topics, the status
+// topic, or ROS 2 topics with the QoS of ROS 2's sensor-data or default profile.
+enum class Traffic { data, status, ros2_sensor_data, ros2_default };
 
 // A participant with one publisher and one subscriber. Profile: CLOUDSHAPE_DDS_PROFILE, else
 // "cloudshape_localhost" (all traffic on this host). With a security folder (resolve_security_dir

@@ -7,7 +7,8 @@
 
 namespace cloudshape::dds {
 
-// Pairs a topic name with its generated type and TopicDataType.
+// Pairs a topic name with its generated type and TopicDataType (`name` must outlive the spec's
+// endpoints: a literal here, a kept string for a ROS 2 topic named at run time).
 template <class Msg, class PubSub>
 struct TopicSpec {
   using Message = Msg;

@@ -164,6 +164,8 @@ CloudFile decode_pointcloud2(const PointCloud2& cloud, const std::string& name, 
 
   CloudFile out;
   out.format = "ros2-pointcloud2";
+  // Width 0 and a height of billions is a valid empty cloud, not billions of empty rows.
+  if (count == 0) return out;
   out.points.reserve(count);
   if (organized) {
     out.grid.width = cloud.width;

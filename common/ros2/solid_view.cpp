@@ -1,5 +1,5 @@
 // What a recognised solid looks like to ROS 2: its own bounding box, from its dimensions, and the
-// RViz marker that draws it. One function per shape; kViews maps shape names to them.
+// RViz marker that draws it. One function per shape; views() maps shape names to them.
 #include "ros2/solid_view.hpp"
 
 #include <Eigen/Geometry>

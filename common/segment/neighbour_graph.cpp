@@ -11,6 +11,9 @@
 namespace cloudshape::segment {
 namespace {
 
+// A voxel key packs 21 bits per axis: an axis holds at most this many cells, with room to spare.
+constexpr double kMaxCellsPerAxis = 1 << 20;
+
 // Running first and second moments of a point set, for a normal without storing the points.
 struct Moments {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // subtracted first: keeps float64 sums exact enough far from 0
@@ -198,9 +201,11 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   const Point origin = box.min;
   const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
   // Never finer than three times the sampling: 26-neighbour voxels must connect a surface's points
-  // where its sampling thins out.
+  // where its sampling thins out. Nor so fine that a cell index leaves the key's 21 bits: the
+  // extent bounds it without squares, which underflow for a cloud of 1e-253 (found by fuzzing).
+  const double extent = (box.max - box.min).maxCoeff();
   double voxel = std::max({box.diagonal() / std::sqrt(target),
-                           3.0 * geometry::mean_nearest_neighbour_distance(points), 1e-300});
+                           3.0 * geometry::mean_nearest_neighbour_distance(points), extent / kMaxCellsPerAxis, 1e-300});
 
   using Key = std::uint64_t;
   const auto key_of = [&](const Point& p, double v) {

@@ -130,6 +130,14 @@ class KeyIndex {
   std::uint32_t size_ = 0;
 };
 
+// The cell of an in-plane coordinate; clamped, since a node spacing near zero makes the quotient
+// overflow any integer (found by fuzzing PointCloud2 input: a cast of infinity is undefined).
+std::int64_t cell_index(double coordinate, double cell) {
+  constexpr double kLimit = 4.0e18;
+  const double index = std::floor(coordinate / cell);
+  return static_cast<std::int64_t>(std::isnan(index) ? 0.0 : std::clamp(index, -kLimit, kLimit));
+}
+
 // Cells of the plane's own 2-D frame occupied by the given nodes' projections.
 std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
                            const geometry::Plane& p, double cell) {
@@ -138,8 +146,8 @@ std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint3
   KeyIndex cells(nodes.size());
   bool added = false;
   for (std::uint32_t n : nodes) {
-    const auto cu = static_cast<std::int64_t>(std::floor(u.dot(g.nodes[n]) / cell));
-    const auto cv = static_cast<std::int64_t>(std::floor(v.dot(g.nodes[n]) / cell));
+    const std::int64_t cu = cell_index(u.dot(g.nodes[n]), cell);
+    const std::int64_t cv = cell_index(v.dot(g.nodes[n]), cell);
     cells.index((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff), added);
   }
   return cells.size();
@@ -168,8 +176,7 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
   const auto cell_of = [&](const Point& x) {
-    return std::pair<std::int64_t, std::int64_t>{static_cast<std::int64_t>(std::floor(u.dot(x) / cell)),
-                                                 static_cast<std::int64_t>(std::floor(v.dot(x) / cell))};
+    return std::pair<std::int64_t, std::int64_t>{cell_index(u.dot(x), cell), cell_index(v.dot(x), cell)};
   };
   // Per row (fixed v) and per column (fixed u), the first and last plane cell.
   struct Spans {
@@ -271,6 +278,11 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       if (height > cfg.structure_band && height <= cfg.structure_contact * cfg.structure_band) contact.push_back(n);
     }
     const double cell = 2.0 * median_spacing(g, fit.inliers);
+    // Nodes of no spacing (one repeated point) span no area to compare.
+    if (!(cell > 0.0)) {
+      for (std::uint32_t n : fit.inliers) tried[n] = 1;
+      continue;
+    }
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;

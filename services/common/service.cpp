@@ -31,6 +31,9 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
                  "downstream readers to wait for before reading input (e.g. the next stage's replicas)")
       ->check(CLI::PositiveNumber);
   app.add_option("--max-points", opt.max_points, "largest raw cloud accepted (ingest; default input.max_points)");
+  app.add_option("--ros-topic", opt.ros_topics,
+                 "also read sensor_msgs/PointCloud2 on this ROS 2 topic, e.g. /camera/depth/points "
+                 "(ingest; repeatable; beside ros2.input_topics)");
   app.add_flag("-v,--verbose", verbose, "debug logging");
   try {
     app.parse(argc, argv);

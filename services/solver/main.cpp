@@ -1,8 +1,10 @@
 // cloudshape-solver: classified cloud -> shape result (dimensions, pose, confidence) by
-// solve_object; an upstream error becomes an "unknown" result carrying the reason.
+// solve_object; an upstream error becomes an "unknown" result carrying the reason. Each cloud's
+// results also go out as ROS 2 Detection3DArray and MarkerArray (ros_results_output.hpp).
 #include "common/service.hpp"
 #include "dds/convert.hpp"
 #include "pipeline/solve.hpp"
+#include "ros_results_output.hpp"
 
 namespace {
 namespace cs = cloudshape;
@@ -37,6 +39,10 @@ int main(int argc, char** argv) {
       argc, argv, "solver", "Solves dimensions and pose of the classified shape (classified -> result).");
   try {
     const cs::config::PipelineConfig cfg = cs::service::load_config(opt);
+    cs::service::Extensions<cs::msg::ShapeResult> ros;
+    ros.side_output = [&](cs::dds::Participant& p) {
+      return std::make_unique<cs::service::RosResultsOutput>(p, cfg.ros2);
+    };
     return cs::service::run(
         opt, cs::dds::topics::classified, cs::dds::topics::result,
         [&](cs::msg::ClassifiedKeypoints& in) {
@@ -52,7 +58,7 @@ int main(int argc, char** argv) {
           out.objects().push_back(cs::dds::to_msg(object));
           return cs::service::one(std::move(out));
         },
-        error_result, empty_result);
+        error_result, empty_result, ros);
   } catch (const std::exception& e) {
     spdlog::critical("{}", e.what());
     return 1;

@@ -24,7 +24,11 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   mcap_replay 72
   mcap_replay_rate 73
   mcap_record 74
-  mcap_replay_node 75)
+  mcap_replay_node 75
+  ros2_cyclone 76
+  ros2_fastdds 77
+  ros2_bad_clouds 78
+  ros2_latency 79)
 
 set(_names "")
 set(_ids "")

@@ -13,6 +13,7 @@
 #include <fastdds/rtps/common/SerializedPayload.h>
 
 #include "cloudshapePubSubTypes.h"
+#include "sensor_msgsPubSubTypes.h"
 #include "fuzz_checks.hpp"
 
 namespace cloudshape::fuzz {
@@ -56,7 +57,8 @@ TEST_P(FuzzRegressions, EveryStoredInputIsReadOrRefused) {
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegressions,
                          ::testing::Values(Target{"pcd", check_pcd_input}, Target{"ply", check_ply_input},
                                            Target{"xyz", check_xyz_input}, Target{"mcap", check_mcap_input},
-                                           Target{"ingest", check_raw_cloud_sample}),
+                                           Target{"ingest", check_raw_cloud_sample},
+                                           Target{"pointcloud2", check_pointcloud2_sample}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // The ingest seeds are what a DataReader would deserialize, not bytes it throws away at once.
@@ -104,6 +106,26 @@ TEST(FuzzIngestSeeds, EverySeedAndFindingIsARawCloudOfTodaysLayout) {
   EXPECT_EQ(frame.width(), 20u);
   EXPECT_EQ(frame.height(), 16u);
   EXPECT_EQ(frame.pixel().size(), 150u);
+}
+
+// The PointCloud2 seeds are whole PointCloud2 samples (fuzz_pointcloud2_seeds writes them), so
+// mutations reach the layout checks rather than dying in the CDR framing.
+TEST(FuzzPointCloud2Seeds, AreCdrPointCloud2s) {
+  std::size_t seeds = 0;
+  for (const fs::path& file : inputs_of("pointcloud2")) {
+    if (file.parent_path().parent_path().filename() != "corpus") continue;
+    SCOPED_TRACE(file.string());
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    eprosima::fastrtps::rtps::SerializedPayload_t payload(static_cast<std::uint32_t>(bytes.size()));
+    std::copy(bytes.begin(), bytes.end(), payload.data);
+    payload.length = static_cast<std::uint32_t>(bytes.size());
+    sensor_msgs::msg::PointCloud2 cloud;
+    EXPECT_TRUE(sensor_msgs::msg::PointCloud2PubSubType().deserialize(&payload, &cloud));
+    EXPECT_EQ(cloud.header().frame_id(), "camera");
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 10u);
 }
 
 }  // namespace

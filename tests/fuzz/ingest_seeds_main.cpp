@@ -2,17 +2,15 @@
 // so they follow the IDL: after a change to RawCloud run `fuzz_ingest_seeds tests/fuzz/corpus/ingest`.
 #include <cstdint>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
 
-#include <fastdds/rtps/common/SerializedPayload.h>
-
 #include "cloudshapePubSubTypes.h"
 #include "dds/convert.hpp"
+#include "seed_file.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
 
@@ -127,19 +125,7 @@ int main(int argc, char** argv) {
     if (seed.name != "object_count_zero") m.header().object_count(1);
     m.header().cloud_id(id++);
     m.header().source(seed.name);
-    cs::msg::RawCloudPubSubType type;
-    eprosima::fastrtps::rtps::SerializedPayload_t payload(type.getSerializedSizeProvider(&m)());
-    if (!type.serialize(&m, &payload)) {
-      std::fprintf(stderr, "fuzz_ingest_seeds: %s does not serialize\n", seed.name.c_str());
-      return 1;
-    }
-    const std::string path = std::string(argv[1]) + "/" + seed.name + ".cdr";
-    std::ofstream out(path, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(payload.data), payload.length);
-    if (!out) {
-      std::fprintf(stderr, "fuzz_ingest_seeds: cannot write %s\n", path.c_str());
-      return 1;
-    }
+    if (!cs::fuzz::write_seed<cs::msg::RawCloudPubSubType>(argv[1], seed.name, m, "fuzz_ingest_seeds")) return 1;
   }
   return 0;
 }
