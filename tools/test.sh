@@ -48,12 +48,13 @@ sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recogniti
                 synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test
                 render_geometry_test render_png_test recognize_render_cli_test)
 # ... and the process-level tests (ctest names) whose programs then run sanitized: the five
-# services, inject and echo (DDS pipeline, crafted samples, ROS 2 clouds), recognize, and cloudshape-synth's
+# services, inject and echo (DDS pipeline, crafted samples), recognize, and cloudshape-synth's
 # shape, suite and mesh commands. Left out for the CI's time budget: the fault and soak tests
-# (the same programs, longer) and the security tests (their participant set-up is sanitized
-# only through dds_participant_cli_test).
-sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test dds_ros2_test mesh_view_cli_test cloudshape-synth)
-sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|DdsRos2\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
+# (the same programs, longer), the security tests (their participant set-up is sanitized
+# only through dds_participant_cli_test) and the ROS 2 process tests (the PointCloud2 decoder
+# and ingest's ROS path are sanitized through their unit tests and the fuzz target).
+sanitize_process_targets=(dds_pipeline_test dds_bad_samples_test mesh_view_cli_test cloudshape-synth)
+sanitize_process_tests='^(DdsPipeline\.|DdsBadSamples\.|RealMeshes/MeshViewCli\.|synth_cli_smoke$)'
 if ((sanitize)); then
   ((long == 0 && bench == 0 && ${#ctest_filter[@]} == 0)) || cs_die "--sanitize takes no other option"
   [[ -n "${CLOUDSHAPE_BUILD_DIR_SET:-}" ]] || CLOUDSHAPE_BUILD_DIR="$CLOUDSHAPE_REPO/build-sanitize"
