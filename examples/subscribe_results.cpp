@@ -1,5 +1,6 @@
-// How another Fast DDS program reads cloudshape's results (README "Subscribing from another DDS
-// program"): only the types generated from idl/cloudshape.idl and Fast DDS, no cloudshape code.
+// How another Fast DDS program reads cloudshape's results (docs/dds.md "Subscribing from
+// another DDS program"): only the types generated from idl/cloudshape.idl and Fast DDS, no
+// cloudshape code.
 // Prints one tab-separated line per object: source, i/n, shape, name=value,..., reason.
 //
 //   subscribe_results QOS_XML DOMAIN [COUNT]     (exit 0 after COUNT samples, 1 after 60 s without one)

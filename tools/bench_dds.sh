@@ -6,7 +6,7 @@
 #   tools/bench_dds.sh --rates "5 10 20" [--clouds N] [--points P]        # steady-rate throughput
 #   common: [--domain N] [--secure]
 #
-# --secure: every participant with DDS Security (a fresh tools/make-certs.sh PKI; README
+# --secure: every participant with DDS Security (a fresh tools/make-certs.sh PKI; docs/dds.md
 # "DDS Security"), to measure what authentication and encryption cost.
 # Latency: from the moment cloudshape-inject writes the sample (system clock in the header) to
 # the moment cloudshape-echo takes the result: serialisation, transport, the five stages and

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds build/ (Release), makes the sample clouds and runs the whole
-# recognition pipeline on them: one JSON line per cloud on stdout (progress on stderr).
+# recognition pipeline on them, in-process and then over DDS. It ends by printing what was found
+# as a table, one line per object (cloudshape-recognize --format table); the JSON results are
+# kept in build/demo/recognize.jsonl and build/demo/dds.jsonl (progress on stderr).
 #
 #   tools/demo.sh [--secure]
 #
@@ -12,11 +14,11 @@
 # Environment: CLOUDSHAPE_BUILD_DIR, CLOUDSHAPE_JOBS, CLOUDSHAPE_REAL_DATA (default
 # ../shared/data/real beside the repository).
 # Then the same clouds through the DDS pipeline: tools/launch.sh starts the five services
-# (logs in build/logs/), cloudshape-echo prints one JSON line per cloud (the same objects as
+# (logs in build/logs/), cloudshape-echo writes one JSON line per cloud (the same objects as
 # the recognizer's), cloudshape-inject publishes the clouds, and the services are stopped.
 # CLOUDSHAPE_DOMAIN picks the DDS domain (default 0); traffic stays on this host.
 # --secure: the DDS part with DDS Security (tools/make-certs.sh makes the test PKI in
-# build/pki, every participant authenticates and encrypts; README "DDS Security").
+# build/pki, every participant authenticates and encrypts; docs/dds.md "DDS Security").
 # Exit status: 0 when every cloud was read and every DDS result arrived.
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
@@ -28,7 +30,7 @@ secure=0
 case "${1:-}" in
   "") ;;
   --secure) secure=1 ;;
-  -h|--help) sed -n '2,20s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+  -h|--help) sed -n '2,22s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
   *) cs_die "unknown argument: $1 (see --help)" ;;
 esac
 
@@ -46,7 +48,8 @@ for tool in cloudshape-synth cloudshape-recognize; do
   [[ -x "$bin/$tool" ]] || cs_die "$bin/$tool was not built"
 done
 samples="$CLOUDSHAPE_BUILD_DIR/samples"
-mkdir -p "$samples"
+results="$CLOUDSHAPE_BUILD_DIR/demo"
+mkdir -p "$samples" "$results"
 
 clouds=()
 add_clouds() {  # appends the cloud files (.pcd .ply .xyz .txt) found in a folder, sorted
@@ -83,9 +86,10 @@ else
 fi
 
 ((${#clouds[@]} > 0)) || cs_die "no sample clouds were made"
-cs_log "recognize (in-process): ${#clouds[@]} clouds, one JSON line each"
+cs_log "recognize (in-process): ${#clouds[@]} clouds, one JSON line each in $results/recognize.jsonl"
 status=0
-"$bin/cloudshape-recognize" "${clouds[@]}" || status=$?
+cs_log "pictures: $CLOUDSHAPE_BUILD_DIR/pictures (one PNG per cloud, docs/pictures.md)"
+"$bin/cloudshape-recognize" --render "$CLOUDSHAPE_BUILD_DIR/pictures" "${clouds[@]}" >"$results/recognize.jsonl" || status=$?
 if ((status == 0)); then
   cs_log "done: ${#clouds[@]} clouds recognised"
 else
@@ -111,9 +115,9 @@ stop_all() {
   "$launch" stop >/dev/null || true
 }
 trap stop_all EXIT
-"$bin/cloudshape-echo" --domain "$domain" --count "${#clouds[@]}" --timeout 600 &
+"$bin/cloudshape-echo" --domain "$domain" --count "${#clouds[@]}" --timeout 600 >"$results/dds.jsonl" &
 echo_pid=$!
-cs_log "dds: injecting ${#clouds[@]} clouds; cloudshape-echo prints one JSON line each"
+cs_log "dds: injecting ${#clouds[@]} clouds; cloudshape-echo writes one JSON line each to $results/dds.jsonl"
 "$bin/cloudshape-inject" --domain "$domain" --wait 120 "${clouds[@]}" 2>"$CLOUDSHAPE_BUILD_DIR/logs/inject.log" \
   || { cs_log "cloudshape-inject failed (log: $CLOUDSHAPE_BUILD_DIR/logs/inject.log)"; status=1; }
 if wait "$echo_pid"; then
@@ -125,4 +129,9 @@ fi
 echo_pid=""
 "$launch" stop
 trap - EXIT
+
+# What a person wants to see last: the objects, one line each. The recognizer runs once more for
+# it (a second or two for the samples) so that the JSON above stays untouched for scripts.
+cs_log "results (JSON: $results/recognize.jsonl, $results/dds.jsonl; pictures: $CLOUDSHAPE_BUILD_DIR/pictures):"
+"$bin/cloudshape-recognize" --format table "${clouds[@]}" || true
 exit "$status"

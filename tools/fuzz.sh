@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs one libFuzzer target for a while: builds build-fuzz/ (clang, CLOUDSHAPE_FUZZ=ON) if needed.
 #
-#   tools/fuzz.sh TARGET SECONDS     # TARGET: pcd, ply, xyz, ingest or pointcloud2
+#   tools/fuzz.sh TARGET SECONDS     # TARGET: pcd, ply, xyz, mcap, ingest or pointcloud2
 #
 # Seeds: tests/fuzz/corpus/TARGET (kept in git); what the fuzzer learns goes to
 # build-fuzz/corpus/TARGET; a crash, timeout or leak lands in build-fuzz/artifacts/TARGET/:
@@ -20,8 +20,8 @@ usage() { sed -n '2,10s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; }
 target="$1"
 seconds="$2"
 case "$target" in
-  pcd|ply|xyz|ingest|pointcloud2) ;;
-  *) usage >&2; cs_die "unknown target '$target' (pcd, ply, xyz, ingest or pointcloud2)" ;;
+  pcd|ply|xyz|mcap|ingest|pointcloud2) ;;
+  *) usage >&2; cs_die "unknown target '$target' (pcd, ply, xyz, mcap, ingest or pointcloud2)" ;;
 esac
 [[ "$seconds" =~ ^[0-9]+$ ]] || cs_die "SECONDS must be a whole number, not '$seconds'"
 

@@ -4,7 +4,7 @@
 #
 #   tools/make-certs.sh OUTDIR
 #
-# OUTDIR then holds what CLOUDSHAPE_SECURITY_DIR / --security needs (README "DDS Security"):
+# OUTDIR then holds what CLOUDSHAPE_SECURITY_DIR / --security needs (docs/dds.md "DDS Security"):
 #   ca.pem                      the CA certificate (identity CA and permissions CA in one)
 #   governance.xml, .p7s        every topic on domains 0..232: authenticated participants only,
 #                               access control, discovery/liveliness/metadata/data ENCRYPTed
@@ -31,7 +31,7 @@ days=3650
 domain_min=0
 domain_max=232
 
-# Who publishes and subscribes what (the topic table of README "DDS pipeline"; ROS 2 topics:
+# Who publishes and subscribes what (the topic table of README "DDS topics"; ROS 2 topics:
 # docs/ros2.md, their default names).
 declare -A publishes=(
   [cloudshape-ingest]="cloudshape_filtered_cloud cloudshape_status"
@@ -48,7 +48,7 @@ declare -A subscribes=(
   [cloudshape-keypoints]="cloudshape_planes"
   [cloudshape-classifier]="cloudshape_keypoints"
   [cloudshape-solver]="cloudshape_classified"
-  [cloudshape-inject]="cloudshape_result"  # it waits for each cloud's result (README "No lost clouds")
+  [cloudshape-inject]="cloudshape_result"  # it waits for each cloud's result (docs/reliability.md)
   [cloudshape-echo]="cloudshape_result cloudshape_status"
 )
 participants=(cloudshape-ingest cloudshape-planes cloudshape-keypoints cloudshape-classifier

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Single views of the real meshes: each YCB and ravens mesh of ../shared/data/real seen from four
 # camera positions with `cloudshape-synth mesh --view`, then `cloudshape-recognize`; counts the
-# views whose output is exactly one object of the right shape (README "Real samples").
+# views whose output is exactly one object of the right shape (docs/performance.md, "Single
+# views of the real meshes").
 #
 #   tools/real-views.sh [--verbose]     (after a build; uses build/bin)
 #

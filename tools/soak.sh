@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Load test of the DDS pipeline (README "Load"): 100k-point clouds through the five services.
+# Load test of the DDS pipeline (docs/reliability.md "Load"): 100k-point clouds through the
+# five services.
 #
 #   tools/soak.sh [--seconds S] [--points N] [--rate HZ] [--overload N] [--max-growth-mb M] [--domain N]
 #
@@ -31,7 +32,7 @@ while (($#)); do
     --overload) overload="$2"; shift ;;
     --max-growth-mb) max_growth_mb="$2"; shift ;;
     --domain) domain="$2"; shift ;;
-    -h|--help) sed -n '2,15s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,14s/^# \{0,1\}//p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) cs_die "unknown argument: $1" ;;
   esac
   shift

@@ -41,10 +41,12 @@ done
 sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recognition_tests
                 io_pcd_reader_test io_pcd_errors_test io_ply_reader_test io_xyz_reader_test
                 io_cloud_reader_test io_cloud_writers_test io_labelled_pcd_writer_test io_mesh_reader_test io_robustness_test
-                io_real_data_test io_pointcloud2_test fuzz_regressions_test dds_ingest_sample_test
+                io_real_data_test io_mcap_reader_test io_mcap_errors_test io_mcap_clouds_test recording_test
+                io_pointcloud2_test fuzz_regressions_test dds_ingest_sample_test
                 dds_ingest_ros_cloud_test ros2_messages_test dds_convert_test
-                dds_socket_buffers_test dds_participant_cli_test recognize_cli_test
-                synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test)
+                dds_socket_buffers_test dds_participant_cli_test recognize_cli_test recognize_mcap_cli_test
+                synth_mesh_visibility_box_test synth_mesh_visibility_occlusion_test
+                render_geometry_test render_png_test recognize_render_cli_test)
 # ... and the process-level tests (ctest names) whose programs then run sanitized: the five
 # services, inject and echo (DDS pipeline, crafted samples, ROS 2 clouds), recognize, and cloudshape-synth's
 # shape, suite and mesh commands. Left out for the CI's time budget: the fault and soak tests
@@ -86,6 +88,7 @@ if ((sanitize)); then
   cs_log "PASS: ${#sanitize_tests[@]} unit-test programs and the process-level tests clean under ASan + UBSan in ${elapsed}s ($times)"
   exit 0
 fi
+cs_ensure_npm_packages
 cs_configure_and_build
 
 ctest_args=(--test-dir "$CLOUDSHAPE_BUILD_DIR" --output-on-failure --no-tests=error

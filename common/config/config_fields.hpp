@@ -43,6 +43,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_reach", c.structure_reach);
   f("structure_contact", c.structure_contact);
   f("structure_margin_cells", c.structure_margin_cells);
+  f("structure_contact_min_degrees", c.structure_contact_min_degrees);
   f("structure_min_standing", c.structure_min_standing);
   f("structure_hypotheses", c.structure_hypotheses);
   f("fragment_max_width", c.fragment_max_width);
@@ -118,6 +119,11 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("closer_fit_margin", c.closer_fit_margin);
   f("polyhedron_face_share", c.polyhedron_face_share);
   f("min_side_span", c.min_side_span);
+  f("extent_hull_samples", c.extent_hull_samples);
+  f("apex_gap", c.apex_gap);
+  f("frustum_min_taper", c.frustum_min_taper);
+  f("frustum_min_top_share", c.frustum_min_top_share);
+  f("regular_tolerance", c.regular_tolerance);
 }
 
 template <class F>

@@ -96,7 +96,8 @@ struct SegmentConfig {
   double structure_reach = 4.0;            // ... and covers at least this many times the area of what stands on it (a solid's face covers about its own solid)
   double structure_contact = 3.0;          // ... and what stands on it touches it (nodes within this many bands above it) ...
   std::int64_t structure_margin_cells = 3; // ... inside it: structure_min_standing of those have plane this many cells (2 node spacings) beyond them on all four sides
-  std::int64_t structure_min_standing = 20;  // nodes that must stand on the viewer's side of a plane for it to be structure
+  double structure_contact_min_degrees = 12.0;  // ... where it meets the plane (down its own slope): none for surfaces closer to parallel than this
+  std::int64_t structure_min_standing = 10;  // nodes that must stand on the viewer's side of a plane for it to be structure
   std::int64_t structure_hypotheses = 200; // RANSAC hypotheses per structure plane
   double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
   double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes
@@ -124,6 +125,11 @@ struct SolveConfig {
   double closer_fit_margin = 0.25;       // ... and one with an RMS this much lower than the key-point class's wins
   double min_side_span = 0.8;            // a prism side seen spans at least this share of the fitted side's width (+ inlier_distance at each edge)
   double polyhedron_face_share = 0.5;    // tetrahedron and prism fits: planes along their faces hold at least this share of the points (prism sides: of the points of planes around the axis)
+  std::int64_t extent_hull_samples = 2000;  // points the extent's minimum-area rectangles are chosen from (its bounds take every point)
+  double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
+  double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
+  double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
+  double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
 };
 
 }  // namespace cloudshape::config

@@ -103,6 +103,18 @@ msg::ObjectResult to_msg(const pipeline::ObjectResult& o) {
   m.keypoints().edge(o.keypoints.edge);
   m.keypoints().border(o.keypoints.border);
   m.reason(o.reason);
+  for (int k = 0; k < 3; ++k) {
+    m.extent().center()[k] = o.extent.center[k];
+    m.extent().size()[k] = o.extent.size[k];
+    for (int c = 0; c < 3; ++c) m.extent().axes()[3 * k + c] = o.extent.axes(k, c);
+  }
+  for (const Eigen::Vector2d& q : o.polygon) {
+    m.polygon().push_back(q.x());
+    m.polygon().push_back(q.y());
+  }
+  for (const Eigen::Vector3d& v : o.vertices)
+    for (int k = 0; k < 3; ++k) m.vertices().push_back(v[k]);
+  m.regular(o.regular);
   return m;
 }
 
@@ -120,6 +132,16 @@ pipeline::ObjectResult from_msg(const msg::ObjectResult& m) {
   o.keypoints.edge = m.keypoints().edge();
   o.keypoints.border = m.keypoints().border();
   o.reason = m.reason();
+  for (int k = 0; k < 3; ++k) {
+    o.extent.center[k] = m.extent().center()[k];
+    o.extent.size[k] = m.extent().size()[k];
+    for (int c = 0; c < 3; ++c) o.extent.axes(k, c) = m.extent().axes()[3 * k + c];
+  }
+  for (std::size_t i = 0; i + 1 < m.polygon().size(); i += 2)
+    o.polygon.emplace_back(m.polygon()[i], m.polygon()[i + 1]);
+  for (std::size_t i = 0; i + 2 < m.vertices().size(); i += 3)
+    o.vertices.emplace_back(m.vertices()[i], m.vertices()[i + 1], m.vertices()[i + 2]);
+  o.regular = m.regular();
   return o;
 }
 

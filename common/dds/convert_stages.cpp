@@ -27,7 +27,7 @@ pipeline::KeypointType from_msg(msg::KeypointType t) {
 }  // namespace
 
 pipeline::Shape shape_from_name(const std::string& name) {
-  for (pipeline::Shape s : pipeline::kSolidShapes) {
+  for (pipeline::Shape s : pipeline::kNamedShapes) {
     if (pipeline::shape_name(s) == name) return s;
   }
   return pipeline::Shape::unknown;

@@ -42,7 +42,7 @@ enum class Traffic { data, status, ros2_sensor_data, ros2_default };
 
 // A participant with one publisher and one subscriber. Profile: CLOUDSHAPE_DDS_PROFILE, else
 // "cloudshape_localhost" (all traffic on this host). With a security folder (resolve_security_dir
-// in dds/security.hpp) it authenticates as `name` and encrypts (README "DDS Security").
+// in dds/security.hpp) it authenticates as `name` and encrypts (docs/dds.md "DDS Security").
 // Deletes everything it created on destruction.
 class Participant {
  public:

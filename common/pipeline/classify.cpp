@@ -56,9 +56,10 @@ std::vector<Shape> shapes_from_faces(const PlaneSegmentation& planes, double fac
   for (std::size_t a = 0; a < faces.size(); ++a)
     for (std::size_t b = a + 1; b < faces.size(); ++b)
       if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -0.95) parallel_pair = true;
+  // A frustum comes last: it is the answer only where a cylinder and a cone both fall short.
   if (faces.empty()) out = {Shape::sphere, Shape::cylinder, Shape::cone};
-  else if (parallel_pair) out = {Shape::cylinder, Shape::cone};
-  else out = {Shape::cone, Shape::cylinder};
+  else if (parallel_pair) out = {Shape::cylinder, Shape::cone, Shape::frustum};
+  else out = {Shape::cone, Shape::cylinder, Shape::frustum};
   return out;
 }
 
@@ -176,7 +177,7 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
   if (out.cap_plane) {
     // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
     out.shape = Shape::cylinder;
-    out.candidates = {Shape::cylinder, Shape::cone};
+    out.candidates = {Shape::cylinder, Shape::cone, Shape::frustum};
     return out;
   }
   add_unique(out.candidates, out.shape);
@@ -187,7 +188,7 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
     out.candidates.erase(std::remove_if(out.candidates.begin(), out.candidates.end(),
                                         [](Shape s) {
                                           return s == Shape::cylinder || s == Shape::cone ||
-                                                 s == Shape::sphere;
+                                                 s == Shape::sphere || s == Shape::frustum;
                                         }),
                          out.candidates.end());
     if (out.shape == Shape::cylinder || out.shape == Shape::cone) out.shape = out.candidates.front();

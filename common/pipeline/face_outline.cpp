@@ -8,36 +8,13 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/convex_hull.hpp"
 #include "geometry/plane.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
 
 using Vec2 = Eigen::Vector2d;
-
-double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
-  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
-}
-
-// Andrew's monotone chain; counter-clockwise, no repeated first point.
-std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
-  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (p.size() < 3) return p;
-  std::vector<Vec2> h(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-    while (k >= t && cross(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
-    h[k++] = p[i - 1];
-  }
-  h.resize(k - 1);
-  return h;
-}
 
 double polygon_area(const std::vector<Vec2>& h) {
   double a = 0.0;
@@ -104,7 +81,7 @@ FaceOutline face_outline(const PointList& cloud, const DetectedPlane& face, doub
     const Eigen::Vector3d d = cloud[i] - origin;
     flat.emplace_back(d.dot(u), d.dot(v));
   }
-  const std::vector<Vec2> hull = convex_hull(std::move(flat));
+  const std::vector<Vec2> hull = geometry::convex_hull_2d(std::move(flat));
   if (hull.size() < 3) return out;
   const double area = polygon_area(hull);
   const double rect = min_rectangle_area(hull);

@@ -7,11 +7,16 @@
 
 namespace cloudshape::pipeline {
 
-enum class Shape { unknown, box, tetrahedron, pentagonal_prism, cone, cylinder, sphere };
+enum class Shape { unknown, box, tetrahedron, pentagonal_prism, cone, cylinder, sphere, prism, frustum };
 
+// The thesis' six: every cloud with a solid in it is tried against each of them.
 inline constexpr std::array<Shape, 6> kSolidShapes = {Shape::box,  Shape::tetrahedron,
                                                       Shape::pentagonal_prism, Shape::cone,
                                                       Shape::cylinder, Shape::sphere};
+// Every named shape; the shapes beyond the six are tried only where the faces call for them.
+inline constexpr std::array<Shape, 8> kNamedShapes = {
+    Shape::box,      Shape::tetrahedron, Shape::pentagonal_prism, Shape::cone,
+    Shape::cylinder, Shape::sphere,      Shape::prism,            Shape::frustum};
 
 inline std::string shape_name(Shape s) {
   switch (s) {
@@ -21,6 +26,8 @@ inline std::string shape_name(Shape s) {
     case Shape::cone: return "cone";
     case Shape::cylinder: return "cylinder";
     case Shape::sphere: return "sphere";
+    case Shape::prism: return "prism";
+    case Shape::frustum: return "frustum";
     case Shape::unknown: break;
   }
   return "unknown";

@@ -1,7 +1,9 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 
 #include "geometry/circle.hpp"
 #include "pipeline/solids.hpp"
@@ -97,82 +99,41 @@ double explained_share(const SolveInput& in, const FittedSolid& cone) {
 }
 
 std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const DetectedPlane& base) {
-  // The base's normal points away from the cloud, the apex lies the other way.
-  const Eigen::Vector3d axis = -base.plane.normal;
-
-  Point base_centroid = Point::Zero();
-  for (std::uint32_t i : base.inliers) base_centroid += in.cloud[i];
-  base_centroid /= static_cast<double>(base.inliers.size());
-  const auto& rim = base.boundary.size() >= 6 ? base.boundary : base.inliers;
-  const auto circle = geometry::fit_circle_in_plane(in.cloud, rim, base_centroid, axis);
-  const Point start = circle ? circle->center : base_centroid;
-
-  // Along the side, the distance to the axis falls linearly with the height above the
-  // base: r = R - k h. Gauss-Newton over the axis position (s, t in the base plane), R and
-  // k uses every side point; the rim circle only gives the start.
-  const auto side = detail::points_off_faces(in.cloud, {&base}, in.cfg.cap_band * in.resolution);
-  if (side.size() < 10) return std::nullopt;
-  double h_max = 0.0;
-  for (std::uint32_t i : side) h_max = std::max(h_max, (in.cloud[i] - start).dot(axis));
-  if (!(h_max > 0.0)) return std::nullopt;
-  std::vector<std::uint32_t> used;
-  for (std::uint32_t i : side) {
-    const double h = (in.cloud[i] - start).dot(axis);
-    if (h > 0.05 * h_max && h < 0.95 * h_max) used.push_back(i);
-  }
-  if (used.size() < 10) return std::nullopt;
-  const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
-  const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
-  Point centre = start;
-  double radius = circle ? circle->radius : 0.0, slope = 0.0;
-  {
-    Eigen::Matrix2d ata = Eigen::Matrix2d::Zero();
-    Eigen::Vector2d atb = Eigen::Vector2d::Zero();
-    for (std::uint32_t i : used) {
-      const Eigen::Vector3d d = in.cloud[i] - centre;
-      const double h = d.dot(axis);
-      const Eigen::Vector2d row(1.0, -h);
-      ata.noalias() += row * row.transpose();
-      atb.noalias() += row * (d - h * axis).norm();
-    }
-    const Eigen::Vector2d sol = ata.ldlt().solve(atb);
-    radius = sol(0);
-    slope = sol(1);
-  }
-  for (int it = 0; it < 10; ++it) {
-    Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
-    Eigen::Vector4d jtr = Eigen::Vector4d::Zero();
-    for (std::uint32_t i : used) {
-      const Eigen::Vector3d d = in.cloud[i] - centre;
-      const double h = d.dot(axis);
-      const Eigen::Vector3d w = d - h * axis;
-      const double r = w.norm();
-      if (r < 1e-12) continue;
-      const Eigen::Vector4d j(-w.dot(u) / r, -w.dot(v) / r, -1.0, h);
-      const double e = r - (radius - slope * h);
-      jtj.noalias() += j * j.transpose();
-      jtr.noalias() += j * e;
-    }
-    const Eigen::Vector4d step = jtj.ldlt().solve(-jtr);
-    if (!step.allFinite()) return std::nullopt;
-    centre += step(0) * u + step(1) * v;
-    radius += step(2);
-    slope += step(3);
-    if (step.norm() < 1e-12 * (radius + 1.0)) break;
-  }
-  if (!(radius > 0.0) || !(slope > 0.0)) return std::nullopt;
-  const double height = radius / slope;
-
-  return make_cone(centre, axis, radius, height);
+  const auto side = detail::fit_conical_side(in, base, {&base});
+  if (!side || !(side->radius > 0.0) || !(side->slope > 0.0)) return std::nullopt;
+  return make_cone(side->centre, side->axis, side->radius, side->radius / side->slope);
 }
 
-}  // namespace
+// A cone cut short: no point comes within solve.apex_gap of the slant height of its apex, while
+// the highest points ring the axis all round (a cut's rim; a cone seen from below shows only
+// part of its silhouette there, a complete one its tip).
+bool cut_short(const SolveInput& in, const FittedSolid& cone) {
+  const Eigen::Vector3d axis = cone.axes.row(0).transpose();
+  const double radius = cone.dimensions[0].second, height = cone.dimensions[1].second;
+  const Point apex = cone.center + height * axis;
+  double nearest = std::numeric_limits<double>::infinity(), top = -nearest;
+  for (const Point& p : in.cloud) {
+    nearest = std::min(nearest, (p - apex).norm());
+    top = std::max(top, (p - cone.center).dot(axis));
+  }
+  if (nearest <= in.cfg.apex_gap * std::hypot(radius, height)) return false;
+  const Eigen::Matrix3d frame = cone.axes;
+  std::array<bool, 12> sector{};
+  const double slab = std::max(in.cfg.face_slab * height, 2.0 * in.resolution);
+  for (const Point& p : in.cloud) {
+    const Eigen::Vector3d d = p - cone.center;
+    if (d.dot(axis) < top - slab) continue;
+    const double a = std::atan2(d.dot(frame.row(2).transpose()), d.dot(frame.row(1).transpose()));
+    sector[static_cast<std::size_t>(std::clamp((a + 3.14159265358979323846) / (2.0 * 3.14159265358979323846) * 12.0, 0.0, 11.0))] = true;
+  }
+  return std::count(sector.begin(), sector.end(), true) >= 10;
+}
 
 // The largest flat face is taken for the base, but a single view may show no base at all,
 // and then that "face" is a flat-looking strip of the side. A cone on it that explains too
 // few points to be reported is not the answer: the base-free fit is tried as well, and the
 // one explaining more points wins (only then: the base-free fit needs the cloud's normals).
-std::optional<FittedSolid> fit_cone(const SolveInput& in) {
+std::optional<FittedSolid> fit_cone_any(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
   std::optional<FittedSolid> on_base;
   if (!faces.empty()) on_base = fit_cone_on_base(in, *faces[0]);
@@ -187,6 +148,14 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   std::optional<FittedSolid> free = fit_cone_without_base(in);
   if (!on_base || !free) return on_base ? on_base : free;
   return explained_share(in, *free) > on_base_share ? free : on_base;
+}
+
+}  // namespace
+
+std::optional<FittedSolid> fit_cone(const SolveInput& in) {
+  auto cone = fit_cone_any(in);
+  if (cone && cut_short(in, *cone)) return std::nullopt;
+  return cone;
 }
 
 }  // namespace cloudshape::pipeline

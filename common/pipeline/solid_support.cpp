@@ -1,8 +1,10 @@
+#include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "geometry/circle.hpp"
 #include "geometry/kdtree.hpp"
 #include "geometry/pca.hpp"
 #include "pipeline/solids.hpp"
@@ -26,6 +28,8 @@ std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {
     case Shape::cylinder: return fit_cylinder(in);
     case Shape::cone: return fit_cone(in);
     case Shape::sphere: return fit_sphere_solid(in);
+    case Shape::frustum: return fit_frustum(in);
+    case Shape::prism: break;
     case Shape::unknown: break;
   }
   return std::nullopt;
@@ -145,6 +149,76 @@ std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
     for (const DetectedPlane* f : faces)
       near = near || std::abs(f->plane.signed_distance(cloud[i])) < band;
     if (!near) out.push_back(static_cast<std::uint32_t>(i));
+  }
+  return out;
+}
+
+std::optional<ConicalSide> fit_conical_side(const SolveInput& in, const DetectedPlane& base,
+                                            const std::vector<const DetectedPlane*>& flat) {
+  // The base's normal points away from the cloud, the side lies the other way.
+  const Eigen::Vector3d axis = -base.plane.normal;
+
+  Point base_centroid = Point::Zero();
+  for (std::uint32_t i : base.inliers) base_centroid += in.cloud[i];
+  base_centroid /= static_cast<double>(std::max<std::size_t>(1, base.inliers.size()));
+  const auto& rim = base.boundary.size() >= 6 ? base.boundary : base.inliers;
+  const auto circle = geometry::fit_circle_in_plane(in.cloud, rim, base_centroid, axis);
+  const Point start = circle ? circle->center : base_centroid;
+
+  // Along the side, the distance to the axis changes linearly with the height above the
+  // base: r = R - k h. Gauss-Newton over the axis position (s, t in the base plane), R and
+  // k uses every side point; the rim circle only gives the start.
+  const auto side = points_off_faces(in.cloud, flat, in.cfg.cap_band * in.resolution);
+  if (side.size() < 10) return std::nullopt;
+  double h_max = 0.0;
+  for (std::uint32_t i : side) h_max = std::max(h_max, (in.cloud[i] - start).dot(axis));
+  if (!(h_max > 0.0)) return std::nullopt;
+  std::vector<std::uint32_t> used;
+  for (std::uint32_t i : side) {
+    const double h = (in.cloud[i] - start).dot(axis);
+    if (h > 0.05 * h_max && h < 0.95 * h_max) used.push_back(i);
+  }
+  if (used.size() < 10) return std::nullopt;
+  const Eigen::Matrix3d frame = frame_from_axis(axis);
+  const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
+  ConicalSide out;
+  out.axis = axis;
+  out.centre = start;
+  out.top = h_max;
+  {
+    Eigen::Matrix2d ata = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d atb = Eigen::Vector2d::Zero();
+    for (std::uint32_t i : used) {
+      const Eigen::Vector3d d = in.cloud[i] - out.centre;
+      const double h = d.dot(axis);
+      const Eigen::Vector2d row(1.0, -h);
+      ata.noalias() += row * row.transpose();
+      atb.noalias() += row * (d - h * axis).norm();
+    }
+    const Eigen::Vector2d sol = ata.ldlt().solve(atb);
+    out.radius = sol(0);
+    out.slope = sol(1);
+  }
+  for (int it = 0; it < 10; ++it) {
+    Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d jtr = Eigen::Vector4d::Zero();
+    for (std::uint32_t i : used) {
+      const Eigen::Vector3d d = in.cloud[i] - out.centre;
+      const double h = d.dot(axis);
+      const Eigen::Vector3d w = d - h * axis;
+      const double r = w.norm();
+      if (r < 1e-12) continue;
+      const Eigen::Vector4d j(-w.dot(u) / r, -w.dot(v) / r, -1.0, h);
+      const double e = r - (out.radius - out.slope * h);
+      jtj.noalias() += j * j.transpose();
+      jtr.noalias() += j * e;
+    }
+    const Eigen::Vector4d step = jtj.ldlt().solve(-jtr);
+    if (!step.allFinite()) return std::nullopt;
+    out.centre += step(0) * u + step(1) * v;
+    out.radius += step(2);
+    out.slope += step(3);
+    if (step.norm() < 1e-12 * (out.radius + 1.0)) break;
   }
   return out;
 }

@@ -81,15 +81,21 @@ std::array<geometry::Plane, 4> face_planes(const std::array<Point, 4>& vertices)
   return planes;
 }
 
-FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices) {
+FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices, double regular_tolerance) {
   FittedSolid out;
   out.shape = Shape::tetrahedron;
-  double edge_sum = 0.0;
+  std::vector<double> edges;
   for (int a = 0; a < 4; ++a) {
     out.center += vertices[a] / 4.0;
-    for (int b = a + 1; b < 4; ++b) edge_sum += (vertices[a] - vertices[b]).norm();
+    for (int b = a + 1; b < 4; ++b) edges.push_back((vertices[a] - vertices[b]).norm());
   }
-  out.dimensions.emplace_back("edge", edge_sum / 6.0);
+  double edge_sum = 0.0;
+  for (double e : edges) edge_sum += e;
+  const double mean = edge_sum / 6.0;
+  out.dimensions.emplace_back("edge", mean);
+  out.vertices.assign(vertices.begin(), vertices.end());
+  out.regular = std::all_of(edges.begin(), edges.end(),
+                            [&](double e) { return std::abs(e - mean) <= regular_tolerance * mean; });
   const Eigen::Vector3d x = (vertices[0] - out.center).normalized();
   Eigen::Vector3d y = vertices[1] - out.center;
   y = (y - y.dot(x) * x).normalized();
@@ -178,7 +184,7 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   const auto on_faces = detail::points_on_planes_along(in.planes, normals, in.cfg.parallel_degrees);
   if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
     return std::nullopt;
-  return make_tetrahedron(*vertices);
+  return make_tetrahedron(*vertices, in.cfg.regular_tolerance);
 }
 
 }  // namespace cloudshape::pipeline

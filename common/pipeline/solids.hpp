@@ -53,6 +53,11 @@ struct FittedSolid {
   // A point well inside the solid, from which every direction meets its surface once. It is
   // the pose centre except where that lies on the surface (the cone's base centre).
   std::optional<Point> interior;
+  // Shape extras of INTERFACE.md: a tetrahedron's corners and whether it is regular, a
+  // prism's cross-section (counter-clockwise in the axes[1], axes[2] plane about center).
+  std::vector<Point> vertices;
+  bool regular = false;
+  std::vector<Eigen::Vector2d> polygon;
   // Signed distance of a point to the solid's surface (negative inside); exact on the
   // surface, a lower bound away from it, which is all verification needs.
   std::function<double(const Point&)> signed_distance;
@@ -68,6 +73,9 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in);
 std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in);
 std::optional<FittedSolid> fit_cone(const SolveInput& in);
 std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
+// A truncated cone from a cap and its straight side; only where the taper is real
+// (solve.frustum_min_taper) and the smaller end not a point.
+std::optional<FittedSolid> fit_frustum(const SolveInput& in);
 
 std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in);
 
@@ -118,6 +126,21 @@ std::size_t points_on_planes_along(const PlaneSegmentation& planes,
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
                                             const std::vector<const DetectedPlane*>& faces,
                                             double band = 0.0);
+
+// The straight side of a solid of revolution standing on `base`: at height h above the base's
+// plane (along `axis`, into the solid) its distance from the axis is radius - slope * h;
+// `centre` is the axis' foot in that plane, `top` the highest side point. Fitted (Gauss-Newton
+// over axis position, radius and slope) to the points off the `flat` faces, between 5% and
+// 95% of that height. Any sign of slope: the caller decides what it may be.
+struct ConicalSide {
+  Point centre = Point::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  double radius = 0.0;
+  double slope = 0.0;
+  double top = 0.0;
+};
+std::optional<ConicalSide> fit_conical_side(const SolveInput& in, const DetectedPlane& base,
+                                            const std::vector<const DetectedPlane*>& flat);
 
 }  // namespace detail
 }  // namespace cloudshape::pipeline

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/oriented_box.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -64,6 +65,13 @@ bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_rati
   return true;
 }
 
+Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
+                 const config::SolveConfig& cfg) {
+  const geometry::OrientedBox box = geometry::oriented_bounding_box(
+      cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)));
+  return {box.center, box.axes, box.size};
+}
+
 }  // namespace
 
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
@@ -75,6 +83,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
   if (classification.candidates.empty()) {
     out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
+    out.extent = extent_of(cloud, {}, cfg);
     return out;
   }
   const SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
@@ -116,6 +125,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     else
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
     out.reason = buf;
+    out.extent = extent_of(cloud, {}, cfg);
     return out;
   }
   const FittedSolid& s = chosen->first;
@@ -123,6 +133,11 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.dimensions = s.dimensions;
   out.center = s.center;
   out.axes = s.axes;
+  out.vertices = s.vertices;
+  out.regular = s.regular;
+  out.polygon = s.polygon;
+  // The solid's own frame is usually the tightest one for its points.
+  out.extent = extent_of(cloud, {s.axes}, cfg);
   // A single view cannot confirm the hidden side: the dimensions describe what was seen,
   // and the confidence drops with the share of the solid that was not seen.
   const double coverage =

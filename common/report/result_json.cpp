@@ -14,18 +14,27 @@ Json vec3_to_json(const Eigen::Vector3d& v) {
 }
 
 template <class Json>
+Json axes_to_json(const Eigen::Matrix3d& axes) {
+  Json out = Json::array();
+  for (int i = 0; i < 3; ++i) out.push_back(vec3_to_json<Json>(axes.row(i).transpose()));
+  return out;
+}
+
+template <class Json>
 Json object_to_json(const pipeline::ObjectResult& o) {
   Json obj = Json::object();
   obj["shape"] = o.shape;
   obj["confidence"] = o.confidence;
   Json dims = Json::object();
-  for (const auto& [name, value] : o.dimensions) dims[name] = value;
+  for (const auto& [name, value] : o.dimensions) {
+    // A count, not a length: written as the integer it is.
+    if (name == "sides") dims[name] = static_cast<std::int64_t>(std::llround(value));
+    else dims[name] = value;
+  }
   obj["dimensions"] = std::move(dims);
   Json pose = Json::object();
   pose["center"] = vec3_to_json<Json>(o.center);
-  Json axes = Json::array();
-  for (int i = 0; i < 3; ++i) axes.push_back(vec3_to_json<Json>(o.axes.row(i).transpose()));
-  pose["axes"] = std::move(axes);
+  pose["axes"] = axes_to_json<Json>(o.axes);
   obj["pose"] = std::move(pose);
   obj["partial"] = o.partial;
   Json kp = Json::object();
@@ -33,6 +42,22 @@ Json object_to_json(const pipeline::ObjectResult& o) {
   kp["edge"] = o.keypoints.edge;
   kp["border"] = o.keypoints.border;
   obj["keypoints"] = std::move(kp);
+  Json extent = Json::object();
+  extent["center"] = vec3_to_json<Json>(o.extent.center);
+  extent["axes"] = axes_to_json<Json>(o.extent.axes);
+  extent["size"] = vec3_to_json<Json>(o.extent.size);
+  obj["extent"] = std::move(extent);
+  if (!o.polygon.empty()) {
+    Json polygon = Json::array();
+    for (const Eigen::Vector2d& q : o.polygon) polygon.push_back(Json::array({q.x(), q.y()}));
+    obj["polygon"] = std::move(polygon);
+  }
+  if (!o.vertices.empty()) {
+    Json vertices = Json::array();
+    for (const Eigen::Vector3d& v : o.vertices) vertices.push_back(vec3_to_json<Json>(v));
+    obj["vertices"] = std::move(vertices);
+    obj["regular"] = o.regular;
+  }
   if (!o.reason.empty()) obj["reason"] = o.reason;
   return obj;
 }
@@ -94,6 +119,21 @@ Eigen::Vector3d vec3(const Json& j, const std::string& where) {
 }
 
 template <class Json>
+Eigen::Matrix3d axes3(const Json& axes, const std::string& awhere) {
+  if (!axes.is_array() || axes.size() != 3) fail(awhere, "expected 3 arrays of 3 numbers");
+  Eigen::Matrix3d m;
+  for (int i = 0; i < 3; ++i) m.row(i) = vec3(axes[i], awhere + "[" + std::to_string(i) + "]").transpose();
+  return m;
+}
+
+template <class Json>
+const Json& array_member(const Json& obj, const std::string& key, const std::string& where) {
+  const Json& a = member(obj, key, where);
+  if (!a.is_array()) fail(join(where, key), "expected an array");
+  return a;
+}
+
+template <class Json>
 pipeline::ObjectResult parse_object(const Json& j, const std::string& where) {
   if (!j.is_object()) fail(where, "expected an object");
   pipeline::ObjectResult o;
@@ -117,12 +157,7 @@ pipeline::ObjectResult parse_object(const Json& j, const std::string& where) {
   const std::string pwhere = join(where, "pose");
   const Json& pose = member(j, "pose", where);
   o.center = vec3(member(pose, "center", pwhere), join(pwhere, "center"));
-  const Json& axes = member(pose, "axes", pwhere);
-  const std::string awhere = join(pwhere, "axes");
-  if (!axes.is_array() || axes.size() != 3) fail(awhere, "expected 3 arrays of 3 numbers");
-  for (int i = 0; i < 3; ++i) {
-    o.axes.row(i) = vec3(axes[i], awhere + "[" + std::to_string(i) + "]").transpose();
-  }
+  o.axes = axes3(member(pose, "axes", pwhere), join(pwhere, "axes"));
 
   const Json& partial = member(j, "partial", where);
   if (!partial.is_boolean()) fail(join(where, "partial"), "expected true or false");
@@ -134,6 +169,31 @@ pipeline::ObjectResult parse_object(const Json& j, const std::string& where) {
   o.keypoints.edge = small_count(member(kp, "edge", kwhere), join(kwhere, "edge"));
   o.keypoints.border = small_count(member(kp, "border", kwhere), join(kwhere, "border"));
 
+  // Optional here so that results of producers older than these fields stay readable.
+  if (j.contains("extent")) {
+    const std::string ewhere = join(where, "extent");
+    const Json& e = member(j, "extent", where);
+    o.extent.center = vec3(member(e, "center", ewhere), join(ewhere, "center"));
+    o.extent.axes = axes3(member(e, "axes", ewhere), join(ewhere, "axes"));
+    o.extent.size = vec3(member(e, "size", ewhere), join(ewhere, "size"));
+  }
+  if (j.contains("polygon")) {
+    const Json& polygon = array_member(j, "polygon", where);
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const std::string pw = join(where, "polygon") + "[" + std::to_string(i) + "]";
+      if (!polygon[i].is_array() || polygon[i].size() != 2) fail(pw, "expected an array of 2 numbers");
+      o.polygon.emplace_back(number(polygon[i][0], pw + "[0]"), number(polygon[i][1], pw + "[1]"));
+    }
+  }
+  if (j.contains("vertices")) {
+    const Json& vertices = array_member(j, "vertices", where);
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+      o.vertices.push_back(vec3(vertices[i], join(where, "vertices") + "[" + std::to_string(i) + "]"));
+  }
+  if (auto it = j.find("regular"); it != j.end()) {
+    if (!it->is_boolean()) fail(join(where, "regular"), "expected true or false");
+    o.regular = it->template get<bool>();
+  }
   if (auto it = j.find("reason"); it != j.end()) o.reason = string(*it, join(where, "reason"));
   return o;
 }
@@ -173,7 +233,7 @@ double round_timing_ms(double ms) {
 
 const std::vector<std::string>& known_shape_names() {
   static const std::vector<std::string> names = {
-      "box", "tetrahedron", "pentagonal_prism", "cone", "cylinder", "sphere", "unknown"};
+      "box", "tetrahedron", "pentagonal_prism", "cone", "cylinder", "sphere", "unknown", "prism", "frustum"};
   return names;
 }
 
@@ -182,6 +242,7 @@ const std::vector<std::string>& dimension_names(const std::string& shape) {
       {"box", {"length", "width", "height"}},   {"tetrahedron", {"edge"}},
       {"pentagonal_prism", {"side", "height"}}, {"cone", {"radius", "height"}},
       {"cylinder", {"radius", "height"}},       {"sphere", {"radius"}},
+      {"prism", {"height", "sides", "side"}},   {"frustum", {"radius", "top_radius", "height"}},
   };
   static const std::vector<std::string> none;
   auto it = table.find(shape);

@@ -2,7 +2,8 @@
 // "cloudshape-echo" output), with its exact key order:
 //   source, points_in, points_used, resolution,
 //   objects[{shape, confidence, dimensions{..}, pose{center, axes}, partial,
-//            keypoints{corner, edge, border}, reason (only when non-empty)}],
+//            keypoints{corner, edge, border}, extent{center, axes, size},
+//            polygon (prism), vertices + regular (tetrahedron), reason (only when non-empty)}],
 //   timings_ms{preprocess, planes, keypoints, classify, solve, total}
 // Lengths, pose and confidence are written at full double precision (they round-trip
 // exactly); timings are rounded to 0.01 ms.
@@ -41,8 +42,8 @@ pipeline::RecognitionResult result_from_json(const nlohmann::ordered_json& json)
 // Parses one JSON line; malformed JSON is a ResultFormatError too.
 pipeline::RecognitionResult result_from_json_line(const std::string& line);
 
-// The dimension names INTERFACE.md lists for `shape`, in order; empty for "unknown" and for
-// shape names it does not know.
+// The dimension names INTERFACE.md lists for `shape`, in order (prism: `side` only for a
+// regular cross-section); empty for "unknown" and for shape names it does not know.
 const std::vector<std::string>& dimension_names(const std::string& shape);
 
 // The shape names INTERFACE.md defines (unknown included).

@@ -74,8 +74,8 @@ class Checker {
   }
 
   void object(const Json& o, const std::string& w) {
-    if (!keys(o, w, {"shape", "confidence", "dimensions", "pose", "partial", "keypoints"},
-              {"reason"})) {
+    if (!keys(o, w, {"shape", "confidence", "dimensions", "pose", "partial", "keypoints", "extent"},
+              {"polygon", "vertices", "regular", "reason"})) {
       return;
     }
     std::string shape;
@@ -102,6 +102,59 @@ class Checker {
       }
     }
     if (o.contains("reason") && !o["reason"].is_string()) add(w + ".reason", "expected a string");
+    if (o.contains("extent")) extent(o["extent"], w + ".extent");
+    extras(o, w, shape);
+  }
+
+  // polygon belongs to a prism and only to it, vertices and regular to a tetrahedron.
+  void extras(const Json& o, const std::string& w, const std::string& shape) {
+    if ((shape == "prism") != o.contains("polygon"))
+      add(w + ".polygon", shape == "prism" ? "a prism needs its polygon" : "only a prism has a polygon");
+    for (const char* k : {"vertices", "regular"})
+      if ((shape == "tetrahedron") != o.contains(k))
+        add(w + "." + k, shape == "tetrahedron" ? "a tetrahedron needs it" : "only a tetrahedron has it");
+    if (o.contains("polygon")) polygon(o["polygon"], w + ".polygon");
+    if (o.contains("vertices")) {
+      const Json& v = o["vertices"];
+      if (!v.is_array() || v.size() != 4) add(w + ".vertices", "expected 4 points");
+      else
+        for (std::size_t i = 0; i < 4; ++i) vec3(v[i], w + ".vertices[" + std::to_string(i) + "]", nullptr);
+    }
+    if (o.contains("regular") && !o["regular"].is_boolean()) add(w + ".regular", "expected true or false");
+  }
+
+  // At least three [u, v] pairs, counter-clockwise (positive area), simple enough to have one.
+  void polygon(const Json& p, const std::string& w) {
+    if (!p.is_array() || p.size() < 3) {
+      add(w, "expected at least 3 [u, v] pairs");
+      return;
+    }
+    std::vector<Eigen::Vector2d> q;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::string iw = w + "[" + std::to_string(i) + "]";
+      if (!p[i].is_array() || p[i].size() != 2) {
+        add(iw, "expected [u, v]");
+        return;
+      }
+      if (!number(p[i][0], iw + "[0]") || !number(p[i][1], iw + "[1]")) return;
+      q.emplace_back(p[i][0].get<double>(), p[i][1].get<double>());
+    }
+    double area2 = 0.0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+      const Eigen::Vector2d& a = q[i];
+      const Eigen::Vector2d& b = q[(i + 1) % q.size()];
+      area2 += a.x() * b.y() - a.y() * b.x();
+    }
+    if (!(area2 > 0.0)) add(w, "not counter-clockwise (signed area <= 0)");
+  }
+
+  void extent(const Json& e, const std::string& w) {
+    if (!keys(e, w, {"center", "axes", "size"})) return;
+    if (e.contains("center")) vec3(e["center"], w + ".center", nullptr);
+    if (e.contains("axes")) axes(e["axes"], w + ".axes");
+    Eigen::Vector3d size;
+    if (e.contains("size") && vec3(e["size"], w + ".size", &size) && !(size.minCoeff() >= 0.0))
+      add(w + ".size", "a size must be >= 0");
   }
 
   void dimensions(const Json& d, const std::string& w, const std::string& shape) {
@@ -111,7 +164,11 @@ class Checker {
     }
     const bool known = std::find(known_shape_names().begin(), known_shape_names().end(), shape) !=
                        known_shape_names().end();
-    if (known) keys(d, w, dimension_names(shape));
+    if (shape == "prism") keys(d, w, {"height", "sides"}, {"side"});
+    else if (known) keys(d, w, dimension_names(shape));
+    if (shape == "prism" && d.contains("sides") &&
+        (!d["sides"].is_number_integer() || d["sides"].get<long long>() < 3))
+      add(w + ".sides", "expected an integer >= 3");
     for (auto it = d.begin(); it != d.end(); ++it) {
       if (number(it.value(), w + "." + it.key()) && it.value().get<double>() <= 0.0) {
         add(w + "." + it.key(), "a length must be > 0");
@@ -128,22 +185,24 @@ class Checker {
   void pose(const Json& p, const std::string& w) {
     if (!keys(p, w, {"center", "axes"})) return;
     if (p.contains("center")) vec3(p["center"], w + ".center", nullptr);
-    if (!p.contains("axes")) return;
-    const Json& a = p["axes"];
+    if (p.contains("axes")) axes(p["axes"], w + ".axes");
+  }
+
+  void axes(const Json& a, const std::string& w) {
     if (!a.is_array() || a.size() != 3) {
-      add(w + ".axes", "expected 3 arrays of 3 numbers");
+      add(w, "expected 3 arrays of 3 numbers");
       return;
     }
     Eigen::Matrix3d m;
     bool ok = true;
     for (int i = 0; i < 3; ++i) {
       Eigen::Vector3d row;
-      ok = vec3(a[i], w + ".axes[" + std::to_string(i) + "]", &row) && ok;
+      ok = vec3(a[i], w + "[" + std::to_string(i) + "]", &row) && ok;
       if (ok) m.row(i) = row.transpose();
     }
     if (!ok) return;
     const double err = (m * m.transpose() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
-    if (err > 1e-6) add(w + ".axes", "not orthonormal (|A A^T - I| = " + std::to_string(err) + ")");
+    if (err > 1e-6) add(w, "not orthonormal (|A A^T - I| = " + std::to_string(err) + ")");
   }
 
   static std::string list(const std::vector<std::string>& v) {

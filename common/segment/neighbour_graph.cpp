@@ -3,9 +3,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
-#include "geometry/kdtree.hpp"
+#include "geometry/detail/flat_hash.hpp"
+#include "geometry/grid_neighbours.hpp"
 #include "geometry/voxel_grid.hpp"
 
 namespace cloudshape::segment {
@@ -44,15 +44,6 @@ void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature) {
   normal = eig.eigenvectors().col(0).normalized();
   const double total = eig.eigenvalues().sum();
   curvature = total > 0.0 ? std::max(0.0, eig.eigenvalues()(0)) / total : 0.0;
-}
-
-void to_csr(const std::vector<std::vector<std::uint32_t>>& lists, NeighbourGraph& g) {
-  g.adjacency_begin.assign(lists.size() + 1, 0);
-  for (std::size_t n = 0; n < lists.size(); ++n) {
-    g.adjacency_begin[n + 1] = g.adjacency_begin[n] + static_cast<std::uint32_t>(lists[n].size());
-  }
-  g.adjacency.reserve(g.adjacency_begin.back());
-  for (const auto& l : lists) g.adjacency.insert(g.adjacency.end(), l.begin(), l.end());
 }
 
 void fill_spacing(NeighbourGraph& g, double fallback) {
@@ -116,24 +107,26 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   const auto same_surface = [&](double ra, double rb) {
     return std::abs(ra - rb) <= cfg.depth_jump * std::min(ra, rb);
   };
-  std::vector<std::vector<std::uint32_t>> lists(g.size());
+  // 8-neighbour cells, in the order a scan that links each cell to its later neighbours gives.
+  constexpr int kOrder[8][2] = {{-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 1}};
+  g.adjacency_begin.assign(g.size() + 1, 0);
+  g.adjacency.reserve(g.size() * 8);
   for (std::size_t cy = 0; cy < cells_y; ++cy) {
     for (std::size_t cx = 0; cx < cells_x; ++cx) {
       const std::uint32_t a = cell_node[cy * cells_x + cx];
       if (a == kNoNode) continue;
-      const int offsets[4][2] = {{1, 0}, {0, 1}, {1, 1}, {-1, 1}};
-      for (const auto& o : offsets) {
+      for (const auto& o : kOrder) {
         const std::ptrdiff_t nx = static_cast<std::ptrdiff_t>(cx) + o[0];
-        const std::size_t ny = cy + o[1];
-        if (nx < 0 || nx >= static_cast<std::ptrdiff_t>(cells_x) || ny >= cells_y) continue;
-        const std::uint32_t b = cell_node[ny * cells_x + nx];
-        if (b == kNoNode || !same_surface(range[a], range[b])) continue;
-        lists[a].push_back(b);
-        lists[b].push_back(a);
+        const std::ptrdiff_t ny = static_cast<std::ptrdiff_t>(cy) + o[1];
+        if (nx < 0 || ny < 0 || nx >= static_cast<std::ptrdiff_t>(cells_x) || ny >= static_cast<std::ptrdiff_t>(cells_y)) {
+          continue;
+        }
+        const std::uint32_t b = cell_node[static_cast<std::size_t>(ny) * cells_x + static_cast<std::size_t>(nx)];
+        if (b != kNoNode && same_surface(range[a], range[b])) g.adjacency.push_back(b);
       }
+      g.adjacency_begin[a + 1] = static_cast<std::uint32_t>(g.adjacency.size());
     }
   }
-  to_csr(lists, g);
   fill_spacing(g, 0.0);
 
   // Every point joins the node of its cell, or of a neighbouring cell, on its side of any jump.
@@ -219,59 +212,77 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
     const Eigen::Vector3d c = ((p - origin) / v).array().floor();
     return (static_cast<Key>(c.x()) << 42) | (static_cast<Key>(c.y()) << 21) | static_cast<Key>(c.z());
   };
-  std::unordered_map<Key, std::uint32_t> voxels;
-  // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
-  for (int attempt = 0; attempt < 40; ++attempt) {
-    voxels.clear();
-    voxels.reserve(points.size());
-    for (const Point& p : points) {
-      voxels.emplace(key_of(p, voxel), static_cast<std::uint32_t>(voxels.size()));
-      if (static_cast<double>(voxels.size()) > 1.3 * target) break;
+  // Node ids in order of first appearance; each point's node kept from the pass that found them.
+  std::vector<Key> keys;
+  std::vector<std::uint32_t> node;
+  const auto bin = [&](double v) {
+    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(1.3 * target) + 1));
+    keys.clear();
+    node.resize(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Key key = key_of(points[i], v);
+      bool inserted = false;
+      node[i] = voxels.find_or_insert(key, static_cast<std::uint32_t>(keys.size()), inserted);
+      if (inserted) {
+        keys.push_back(key);
+        if (static_cast<double>(keys.size()) > 1.3 * target) return voxels;
+      }
     }
-    if (static_cast<double>(voxels.size()) <= 1.3 * target) break;
+    return voxels;
+  };
+  // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
+  geometry::detail::CellMap voxels = bin(voxel);
+  for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > 1.3 * target; ++attempt) {
     voxel *= 1.25;
+    voxels = bin(voxel);
   }
-  g.nodes.assign(voxels.size(), Point::Zero());
-  std::vector<std::size_t> counts(voxels.size(), 0);
+  const std::size_t nodes = keys.size();
+  g.nodes.assign(nodes, Point::Zero());
+  std::vector<std::size_t> counts(nodes, 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::uint32_t n = voxels.at(key_of(points[i], voxel));
+    const std::uint32_t n = node[i];
     g.node_of_point[i] = n;
     g.nodes[n] += points[i];
     ++counts[n];
   }
   for (std::size_t n = 0; n < g.size(); ++n) g.nodes[n] /= static_cast<double>(counts[n]);
 
-  std::vector<std::vector<std::uint32_t>> lists(g.size());
-  for (const auto& [key, n] : voxels) {
+  g.adjacency_begin.assign(nodes + 1, 0);
+  g.adjacency.reserve(nodes * 8);
+  std::vector<std::uint32_t> near;
+  for (std::size_t n = 0; n < nodes; ++n) {
+    const Key key = keys[n];
     const std::int64_t x = static_cast<std::int64_t>(key >> 42);
     const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
     const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
+    near.clear();
     for (int dx = -1; dx <= 1; ++dx) {
       for (int dy = -1; dy <= 1; ++dy) {
         for (int dz = -1; dz <= 1; ++dz) {
           if (dx == 0 && dy == 0 && dz == 0) continue;
           if (x + dx < 0 || y + dy < 0 || z + dz < 0) continue;
           const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
-          const auto it = voxels.find(k);
-          if (it != voxels.end()) lists[n].push_back(it->second);
+          const std::uint32_t m = voxels.find(k);
+          if (m != geometry::detail::CellMap::kAbsent) near.push_back(m);
         }
       }
     }
+    std::sort(near.begin(), near.end());
+    g.adjacency.insert(g.adjacency.end(), near.begin(), near.end());
+    g.adjacency_begin[n + 1] = static_cast<std::uint32_t>(g.adjacency.size());
   }
-  for (auto& l : lists) std::sort(l.begin(), l.end());
-  to_csr(lists, g);
   fill_spacing(g, voxel);
 
-  const geometry::KdTree tree(g.nodes);
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
-  std::vector<std::uint32_t> near;
+  // Nodes sit about a voxel apart on a surface: the k-th lies within sqrt(k / pi) voxels.
+  std::vector<std::uint32_t> knn;
+  geometry::all_nearest_neighbours(g.nodes, k, 0.75 * std::sqrt(static_cast<double>(k)) * voxel, knn);
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
   for (std::uint32_t n = 0; n < g.size(); ++n) {
-    tree.knn(g.nodes[n], k, near);
     Moments m;
     m.origin = g.nodes[n];
-    for (std::uint32_t j : near) m.add(g.nodes[j]);
+    for (std::size_t j = 0; j < k; ++j) m.add(g.nodes[knn[n * k + j]]);
     normal_of(m, g.normals[n], g.curvature[n]);
   }
   return g;

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
-#include <unordered_set>
 
+#include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
 
 namespace cloudshape::segment {
@@ -58,6 +59,15 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     std::shuffle(sample.begin(), sample.end(), rng);
     sample.resize(kScoreSamples);
   }
+  // The sample's nodes side by side: every hypothesis scans them, is_inlier's test on a copy.
+  struct Scored {
+    Point node;
+    Eigen::Vector3d normal;
+    double limit;
+  };
+  std::vector<Scored> scored;
+  scored.reserve(sample.size());
+  for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
   geometry::Plane best;
   std::size_t best_score = 0;
@@ -67,7 +77,9 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
     std::size_t score = 0;
-    for (std::uint32_t n : sample) score += is_inlier(g, n, p, band, min_cos) ? 1 : 0;
+    for (const Scored& c : scored) {
+      score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
+    }
     if (score > best_score) {
       best_score = score;
       best = p;
@@ -92,6 +104,32 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   return fit;
 }
 
+// Distinct 64-bit keys numbered in order of arrival, on the flat cell map (whose empty-slot
+// marker, all bits set, is a key of its own here: the cell (-1, -1)).
+class KeyIndex {
+ public:
+  static constexpr std::uint32_t kAbsent = geometry::detail::CellMap::kAbsent;
+  explicit KeyIndex(std::size_t expected) : map_(expected) {}
+  std::uint32_t index(std::uint64_t key, bool& added) {
+    if (key == kAllOnes) {
+      added = all_ones_ == kAbsent;
+      if (added) all_ones_ = size_++;
+      return all_ones_;
+    }
+    const std::uint32_t i = map_.find_or_insert(key, size_, added);
+    if (added) ++size_;
+    return i;
+  }
+  std::uint32_t find(std::uint64_t key) const { return key == kAllOnes ? all_ones_ : map_.find(key); }
+  std::size_t size() const { return size_; }
+
+ private:
+  static constexpr std::uint64_t kAllOnes = ~std::uint64_t{0};
+  geometry::detail::CellMap map_;
+  std::uint32_t all_ones_ = kAbsent;
+  std::uint32_t size_ = 0;
+};
+
 // The cell of an in-plane coordinate; clamped, since a node spacing near zero makes the quotient
 // overflow any integer (found by fuzzing PointCloud2 input: a cast of infinity is undefined).
 std::int64_t cell_index(double coordinate, double cell) {
@@ -105,49 +143,75 @@ std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint3
                            const geometry::Plane& p, double cell) {
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
-  std::unordered_set<std::uint64_t> cells;
+  KeyIndex cells(nodes.size());
+  bool added = false;
   for (std::uint32_t n : nodes) {
     const std::int64_t cu = cell_index(u.dot(g.nodes[n]), cell);
     const std::int64_t cv = cell_index(v.dot(g.nodes[n]), cell);
-    cells.insert((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff));
+    cells.index((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff), added);
   }
   return cells.size();
 }
 
-// How many of the `contact` nodes (what stands on the plane, where it meets it) lie inside the
-// plane: their projection has plane cells beyond it, at least `margin` cells away, in all four
-// in-plane directions. A table surrounds what stands on it (also beyond the shadow an object
-// casts), while a solid's other faces rise from its face's own edges, where the face ends.
+// Where a contact node's surface meets the plane: from the node down its own surface's steepest
+// slope to the plane. A side that leans over the plane (a cone's side over its own base) meets
+// it at the plane's edge although its nodes lie above the plane's inside; a wall-like side meets
+// it straight below. None for a node whose surface is nearly parallel to the plane.
+std::optional<Point> foot_on_plane(const NeighbourGraph& g, std::uint32_t n, const geometry::Plane& p,
+                                   double min_slope) {
+  const Eigen::Vector3d& s = g.normals[n];
+  const Eigen::Vector3d downhill = -(p.normal - p.normal.dot(s) * s);
+  const double slope = downhill.norm();  // sine of the angle between the surface and the plane
+  if (slope < min_slope) return std::nullopt;
+  return Point(g.nodes[n] + (p.signed_distance(g.nodes[n]) / (slope * slope)) * downhill);
+}
+
+// How many of the `contact` nodes (what stands on the plane, near it) meet it inside: where their
+// surface meets the plane (foot_on_plane) has plane cells beyond it, at least `margin` cells
+// away, in all four in-plane directions. A table surrounds what stands on it (also beyond the
+// shadow an object casts), while a solid's other faces rise from its face's own edges.
 std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint32_t>& inliers,
                             const std::vector<std::uint32_t>& contact, const geometry::Plane& p, double cell,
-                            int margin) {
+                            int margin, double min_slope) {
   Eigen::Vector3d u, v;
   geometry::plane_basis(p.normal, u, v);
-  const auto cell_of = [&](std::uint32_t n) {
-    return std::pair<std::int64_t, std::int64_t>{cell_index(u.dot(g.nodes[n]), cell), cell_index(v.dot(g.nodes[n]), cell)};
+  const auto cell_of = [&](const Point& x) {
+    return std::pair<std::int64_t, std::int64_t>{cell_index(u.dot(x), cell), cell_index(v.dot(x), cell)};
   };
   // Per row (fixed v) and per column (fixed u), the first and last plane cell.
-  std::unordered_map<std::int64_t, std::pair<std::int64_t, std::int64_t>> rows, cols;
-  const auto widen = [](auto& map, std::int64_t key, std::int64_t value) {
-    auto [it, added] = map.emplace(key, std::pair{value, value});
-    if (!added) {
-      it->second.first = std::min(it->second.first, value);
-      it->second.second = std::max(it->second.second, value);
+  struct Spans {
+    KeyIndex index;
+    std::vector<std::pair<std::int64_t, std::int64_t>> span;
+    void widen(std::int64_t key, std::int64_t value) {
+      bool added = false;
+      const std::uint32_t i = index.index(static_cast<std::uint64_t>(key), added);
+      if (added) {
+        span.emplace_back(value, value);
+      } else {
+        span[i].first = std::min(span[i].first, value);
+        span[i].second = std::max(span[i].second, value);
+      }
+    }
+    const std::pair<std::int64_t, std::int64_t>* find(std::int64_t key) const {
+      const std::uint32_t i = index.find(static_cast<std::uint64_t>(key));
+      return i == KeyIndex::kAbsent ? nullptr : &span[i];
     }
   };
+  Spans rows{KeyIndex(inliers.size()), {}}, cols{KeyIndex(inliers.size()), {}};
   for (std::uint32_t n : inliers) {
-    const auto [cu, cv] = cell_of(n);
-    widen(rows, cv, cu);
-    widen(cols, cu, cv);
+    const auto [cu, cv] = cell_of(g.nodes[n]);
+    rows.widen(cv, cu);
+    cols.widen(cu, cv);
   }
   std::size_t inside = 0;
   for (std::uint32_t n : contact) {
-    const auto [cu, cv] = cell_of(n);
-    const auto r = rows.find(cv);
-    const auto c = cols.find(cu);
-    if (r == rows.end() || c == cols.end()) continue;
-    if (r->second.first <= cu - margin && r->second.second >= cu + margin && c->second.first <= cv - margin &&
-        c->second.second >= cv + margin) {
+    const std::optional<Point> foot = foot_on_plane(g, n, p, min_slope);
+    if (!foot) continue;
+    const auto [cu, cv] = cell_of(*foot);
+    const auto* r = rows.find(cv);
+    const auto* c = cols.find(cu);
+    if (r == nullptr || c == nullptr) continue;
+    if (r->first <= cu - margin && r->second >= cu + margin && c->first <= cv - margin && c->second >= cv + margin) {
       ++inside;
     }
   }
@@ -222,7 +286,8 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
-    const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells);
+    const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells,
+                                               std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
     const bool structure = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
     if (!structure) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;

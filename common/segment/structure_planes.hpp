@@ -20,10 +20,11 @@ struct StructurePlane {
 // (cfg.structure_band node spacings, cfg.structure_normal_degrees), and removes its largest
 // connected part (sets `removed`) while it holds cfg.structure_min_share of the nodes, at least
 // cfg.structure_min_standing nodes stand on its open side (the viewer's, else the side most other
-// nodes are on), its area is at least cfg.structure_reach times their footprint and it reaches
-// beyond that footprint by cfg.structure_margin of its extent on three of its four sides: a
-// solid's own face has its solid behind it, covers no more than the solid does, and meets the
-// solid's other faces at its own edges. Deterministic for a given cfg.seed.
+// nodes are on) and meet it inside (plane cfg.structure_margin_cells beyond where their surface,
+// followed down its own slope, meets the plane, in all four in-plane directions), and its area is
+// at least cfg.structure_reach times their footprint: a solid's own face has its solid behind it,
+// covers no more than the solid does, and meets the solid's other faces at its own edges (a
+// cone's side leans over its base, but meets it at the base's edge). Deterministic for cfg.seed.
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
                                              std::vector<char>& removed);
 

@@ -174,7 +174,7 @@ TEST(DdsConvert, ClassificationRoundTripIsExact) {
 }
 
 TEST(DdsConvert, EveryShapeNameComesBack) {
-  for (pipeline::Shape s : pipeline::kSolidShapes) EXPECT_EQ(shape_from_name(pipeline::shape_name(s)), s);
+  for (pipeline::Shape s : pipeline::kNamedShapes) EXPECT_EQ(shape_from_name(pipeline::shape_name(s)), s);
   EXPECT_EQ(shape_from_name("no such shape"), pipeline::Shape::unknown);
 }
 
@@ -209,6 +209,25 @@ TEST(DdsConvert, ResultRoundTripIsExact) {
   EXPECT_EQ(b.keypoints.edge, o.keypoints.edge);
   EXPECT_EQ(b.keypoints.border, o.keypoints.border);
   EXPECT_EQ(b.reason, o.reason);
+  EXPECT_EQ(b.extent.center, o.extent.center);
+  EXPECT_EQ(b.extent.axes, o.extent.axes);
+  EXPECT_EQ(b.extent.size, o.extent.size);
+  EXPECT_GT(o.extent.size.minCoeff(), 0.0);
+}
+
+// The shape-specific extras travel too: a prism's polygon, a tetrahedron's corners.
+TEST(DdsConvert, PolygonVerticesAndRegularRoundTrip) {
+  pipeline::ObjectResult o;
+  o.shape = "prism";
+  o.polygon = {{1.0, 0.0}, {0.0, 1.0}, {-1.0, 0.25}};
+  o.vertices = {{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.5}};
+  o.regular = true;
+  o.extent.size = {3.0, 2.0, 1.0};
+  const pipeline::ObjectResult b = from_msg(to_msg(o));
+  EXPECT_EQ(b.polygon, o.polygon);
+  EXPECT_EQ(b.vertices, o.vertices);
+  EXPECT_TRUE(b.regular);
+  EXPECT_EQ(b.extent.size, o.extent.size);
 }
 
 }  // namespace

@@ -21,10 +21,14 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   security_forged 69
   faults_killed_inside_receive 70
   faults_every_service_killed_inside_receive 71
-  ros2_cyclone 72
-  ros2_fastdds 73
-  ros2_bad_clouds 74
-  ros2_latency 75)
+  mcap_replay 72
+  mcap_replay_rate 73
+  mcap_record 74
+  mcap_replay_node 75
+  ros2_cyclone 76
+  ros2_fastdds 77
+  ros2_bad_clouds 78
+  ros2_latency 79)
 
 set(_names "")
 set(_ids "")

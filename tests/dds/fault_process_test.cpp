@@ -1,6 +1,6 @@
-// Fault tests of the DDS pipeline (README "No lost clouds"): services killed with SIGKILL and
-// restarted mid-stream, a network link cut for longer than the lease; every injected cloud
-// must still end in exactly one, correct result line of cloudshape-echo.
+// Fault tests of the DDS pipeline (docs/reliability.md "No lost clouds"): services killed with
+// SIGKILL and restarted mid-stream, a network link cut for longer than the lease; every injected
+// cloud must still end in exactly one, correct result line of cloudshape-echo.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -241,8 +241,9 @@ bool gdb_can_stop_processes() {
 }
 
 // Like run_with_kills, but each victim dies inside the receive of a sample: the case that left
-// Fast DDS 2.9's shared-memory transport unable to reach the restarted process (README "No
-// lost clouds"). The default profile must recover from it as from any kill.
+// Fast DDS 2.9's shared-memory transport unable to reach the restarted process
+// (docs/reliability.md "No lost clouds"). The default profile must recover from it as from any
+// kill.
 // Clouds go in at `rate` Hz for count / rate seconds: long enough that inject still sends when
 // the last victim is stopped (a stage with nothing to receive cannot be caught in a receive).
 void run_with_kills_inside_receive(FaultRig& rig, int count, const std::string& rate,

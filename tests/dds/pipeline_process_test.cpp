@@ -206,7 +206,7 @@ TEST(DdsPipeline, CycloneDdsReadsTheResults) {
 #endif
 }
 
-// The README's Fast DDS subscriber (examples/subscribe_results.cpp) reads the results.
+// docs/dds.md's Fast DDS subscriber (examples/subscribe_results.cpp) reads the results.
 TEST(DdsPipeline, ExampleSubscriberReadsTheResults) {
   Pipeline p("example", domains::pipeline_example_subscriber);
   const std::vector<std::string> files = synthetic_clouds(p.dir() + "/clouds", 4000);

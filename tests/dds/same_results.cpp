@@ -75,6 +75,22 @@ void compare_object(Differences& d, const pipeline::ObjectResult& a, const pipel
   d.equal("edge key-points", a.keypoints.edge, e.keypoints.edge);
   d.equal("border key-points", a.keypoints.border, e.keypoints.border);
   d.equal("reason", a.reason, e.reason);
+  for (int k = 0; k < 3; ++k) {
+    d.near("extent.center[" + std::to_string(k) + "]", a.extent.center[k], e.extent.center[k]);
+    d.near("extent.size[" + std::to_string(k) + "]", a.extent.size[k], e.extent.size[k]);
+    for (int c = 0; c < 3; ++c)
+      d.near("extent.axes[" + std::to_string(k) + "][" + std::to_string(c) + "]", a.extent.axes(k, c),
+             e.extent.axes(k, c));
+  }
+  d.equal("polygon size", a.polygon.size(), e.polygon.size());
+  for (std::size_t i = 0; i < std::min(a.polygon.size(), e.polygon.size()); ++i)
+    for (int k = 0; k < 2; ++k)
+      d.near("polygon[" + std::to_string(i) + "][" + std::to_string(k) + "]", a.polygon[i][k], e.polygon[i][k]);
+  d.equal("vertex count", a.vertices.size(), e.vertices.size());
+  for (std::size_t i = 0; i < std::min(a.vertices.size(), e.vertices.size()); ++i)
+    for (int k = 0; k < 3; ++k)
+      d.near("vertices[" + std::to_string(i) + "][" + std::to_string(k) + "]", a.vertices[i][k], e.vertices[i][k]);
+  d.equal("regular", a.regular, e.regular);
 }
 
 }  // namespace

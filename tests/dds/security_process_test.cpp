@@ -193,7 +193,8 @@ TEST_F(DdsSecurity, PermissionsAllowOnlyEachParticipantsOwnTopics) {
   {
     dds::Participant inject(domain, "cloudshape-inject", legit());
     EXPECT_NO_THROW(dds::Writer<decltype(dds::topics::raw_cloud)>(inject, dds::topics::raw_cloud));
-    // It reads the results to send a lost cloud again (README "No lost clouds"), nothing else.
+    // It reads the results to send a lost cloud again (docs/reliability.md "No lost clouds"),
+    // nothing else.
     EXPECT_NO_THROW(dds::Reader<decltype(dds::topics::result)>(inject, dds::topics::result));
     EXPECT_THROW(dds::Reader<decltype(dds::topics::planes)>(inject, dds::topics::planes), dds::DdsError);
     EXPECT_THROW(dds::Writer<decltype(dds::topics::result)>(inject, dds::topics::result), dds::DdsError);

@@ -13,14 +13,6 @@
 namespace cloudshape::fuzz {
 namespace {
 
-// Small enough that a lying header cannot make the fuzzer run out of memory.
-io::ReadLimits fuzz_limits() {
-  io::ReadLimits limits;
-  limits.max_points = 100'000;
-  limits.max_bytes = 1u << 20;
-  return limits;
-}
-
 std::string cloud_problems(const io::CloudFile& cloud, const io::ReadLimits& limits) {
   if (cloud.points.size() + cloud.non_finite_dropped > limits.max_points) {
     return std::to_string(cloud.points.size() + cloud.non_finite_dropped) + " points read, over the limit";

@@ -56,7 +56,7 @@ TEST_P(FuzzRegressions, EveryStoredInputIsReadOrRefused) {
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegressions,
                          ::testing::Values(Target{"pcd", check_pcd_input}, Target{"ply", check_ply_input},
-                                           Target{"xyz", check_xyz_input},
+                                           Target{"xyz", check_xyz_input}, Target{"mcap", check_mcap_input},
                                            Target{"ingest", check_raw_cloud_sample},
                                            Target{"pointcloud2", check_pointcloud2_sample}),
                          [](const auto& info) { return std::string(info.param.name); });

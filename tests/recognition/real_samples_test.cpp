@@ -65,7 +65,7 @@ TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
       cloud, config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), s.file);
   ASSERT_EQ(result.objects.size(), 1u);
   const auto& got = result.objects.front();
-  // One Markdown row per sample: the README's real-data table is this output.
+  // One Markdown row per sample: docs/performance.md's real-data table is this output.
   std::string reported, truth;
   for (std::size_t d = 0; d < got.dimensions.size(); ++d)
     reported += (d ? " x " : "") + std::to_string(got.dimensions[d].second * s.scale_to_mm).substr(0, 5);
@@ -130,7 +130,7 @@ TEST(RealScan, TableTopScenesGiveTheObjectsOnTheTable) {
 // scene issue's acceptance): radius within 5%, centre within 5 cm.
 // DISABLED: the segmentation does not find the sphere yet. The scan's rings are ~10 times farther
 // apart than its points along a ring, so k-nearest-neighbour normals of ground and sphere lie
-// along the rings and the ground is not found as a plane (README "Scenes": what is left).
+// along the rings and the ground is not found as a plane (docs/performance.md "Scenes").
 TEST(RealScan, DISABLED_LidarCalibrationSphereAmongGroundAndWalls) {
   const std::filesystem::path path =
       std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";

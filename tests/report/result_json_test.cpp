@@ -30,6 +30,30 @@ ObjectResult box_object() {
   o.axes = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   o.partial = true;
   o.keypoints = {8, 3, 17};
+  o.extent.center = Eigen::Vector3d(0.5, -2.5e10, 3.0);
+  o.extent.axes = Eigen::AngleAxisd(0.3, Eigen::Vector3d(3, 2, 1).normalized()).toRotationMatrix();
+  o.extent.size = Eigen::Vector3d(31.0 / 3.0, 7.0, 1e-7);
+  return o;
+}
+
+ObjectResult prism_object() {
+  ObjectResult o;
+  o.shape = "prism";
+  o.confidence = 0.8;
+  o.dimensions = {{"height", 2.5}, {"sides", 3.0}, {"side", 1.0}};
+  o.polygon = {{-0.5, -0.25}, {0.5, -0.25}, {0.0, 0.6}};
+  o.extent.size = Eigen::Vector3d(2.5, 1.0, 0.85);
+  return o;
+}
+
+ObjectResult tetrahedron_object() {
+  ObjectResult o;
+  o.shape = "tetrahedron";
+  o.confidence = 0.9;
+  o.dimensions = {{"edge", 1.25}};
+  o.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1.5, 0}, {0, 0, 2}};
+  o.regular = false;
+  o.extent.size = Eigen::Vector3d(2.0, 1.5, 1.0);
   return o;
 }
 
@@ -76,6 +100,12 @@ void expect_same(const RecognitionResult& a, const RecognitionResult& b) {
     EXPECT_EQ(x.keypoints.edge, y.keypoints.edge);
     EXPECT_EQ(x.keypoints.border, y.keypoints.border);
     EXPECT_EQ(x.reason, y.reason);
+    EXPECT_EQ(x.extent.center, y.extent.center);
+    EXPECT_EQ(x.extent.axes, y.extent.axes);
+    EXPECT_EQ(x.extent.size, y.extent.size);
+    EXPECT_EQ(x.polygon, y.polygon);
+    EXPECT_EQ(x.vertices, y.vertices);
+    EXPECT_EQ(x.regular, y.regular);
   }
 }
 
@@ -85,7 +115,8 @@ TEST(ResultJson, KeyOrderFollowsInterface) {
                                                   "resolution", "objects", "timings_ms"}));
   const Json& box = j["objects"][0];
   EXPECT_EQ(keys_of(box), (std::vector<std::string>{"shape", "confidence", "dimensions", "pose",
-                                                    "partial", "keypoints"}));
+                                                    "partial", "keypoints", "extent"}));
+  EXPECT_EQ(keys_of(box["extent"]), (std::vector<std::string>{"center", "axes", "size"}));
   EXPECT_EQ(keys_of(box["dimensions"]), (std::vector<std::string>{"length", "width", "height"}));
   EXPECT_EQ(keys_of(box["pose"]), (std::vector<std::string>{"center", "axes"}));
   EXPECT_EQ(keys_of(box["keypoints"]), (std::vector<std::string>{"corner", "edge", "border"}));
@@ -117,6 +148,29 @@ TEST(ResultJson, ValuesAndTypes) {
   }
   EXPECT_TRUE(j["objects"][1]["dimensions"].is_object());
   EXPECT_TRUE(j["objects"][1]["dimensions"].empty());
+}
+
+// polygon only on a prism, vertices and regular only on a tetrahedron, before any reason;
+// a prism's `sides` is written as an integer.
+TEST(ResultJson, ShapeExtrasAndTheirPlace) {
+  RecognitionResult r = sample_result();
+  r.objects = {prism_object(), tetrahedron_object(), box_object()};
+  r.objects[1].reason = "a note";
+  const Json j = result_to_json(r);
+  EXPECT_EQ(keys_of(j["objects"][0]), (std::vector<std::string>{"shape", "confidence", "dimensions", "pose",
+                                                                "partial", "keypoints", "extent", "polygon"}));
+  EXPECT_EQ(keys_of(j["objects"][1]),
+            (std::vector<std::string>{"shape", "confidence", "dimensions", "pose", "partial", "keypoints",
+                                      "extent", "vertices", "regular", "reason"}));
+  EXPECT_FALSE(j["objects"][2].contains("polygon"));
+  EXPECT_FALSE(j["objects"][2].contains("vertices"));
+  EXPECT_TRUE(j["objects"][0]["dimensions"]["sides"].is_number_integer());
+  EXPECT_EQ(j["objects"][0]["dimensions"]["sides"].get<int>(), 3);
+  EXPECT_EQ(j["objects"][0]["polygon"][2][1].get<double>(), 0.6);
+  EXPECT_EQ(j["objects"][1]["vertices"][3][2].get<double>(), 2.0);
+  EXPECT_FALSE(j["objects"][1]["regular"].get<bool>());
+  expect_same(r, result_from_json(j));
+  EXPECT_EQ(schema_problems(j), std::vector<std::string>{});
 }
 
 TEST(ResultJson, TimingsRoundedToHundredthsOfMs) {
@@ -237,7 +291,8 @@ TEST(ResultSchema, WriterOutputConforms) {
 }
 
 TEST(ResultSchema, InterfaceExampleConforms) {
-  // The example from INTERFACE.md, verbatim.
+  // The example from INTERFACE.md, verbatim but for the extent its list of fields requires on
+  // every object and the example does not show.
   const Json example = Json::parse(
       R"({"source": "box.pcd", "points_in": 40000, "points_used": 9876, "resolution": 0.41,
  "objects": [
@@ -246,12 +301,35 @@ TEST(ResultSchema, InterfaceExampleConforms) {
     "pose": {"center": [1.0, 2.0, 3.0],
              "axes": [[1,0,0],[0,1,0],[0,0,1]]},
     "partial": false,
-    "keypoints": {"corner": 8, "edge": 0, "border": 0}}
+    "keypoints": {"corner": 8, "edge": 0, "border": 0},
+    "extent": {"center": [1.0, 2.0, 3.0], "axes": [[1,0,0],[0,1,0],[0,0,1]], "size": [30.0, 20.0, 10.0]}}
  ],
  "timings_ms": {"preprocess": 3.1, "planes": 5.2, "keypoints": 1.0, "classify": 0.2, "solve": 0.1, "total": 9.6}})");
   EXPECT_EQ(schema_problems(example), std::vector<std::string>{});
   const RecognitionResult r = result_from_json(example);
   EXPECT_EQ(Json::parse(result_to_json_line(r)), example);
+}
+
+TEST(ResultSchema, FindsViolationsOfTheShapeExtras) {
+  RecognitionResult r;
+  r.objects = {prism_object(), tetrahedron_object()};
+  const Json good = result_to_json(r);
+  auto problems_with = [&](auto mutate) {
+    Json j = good;
+    mutate(j);
+    return schema_problems(j);
+  };
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0].erase("polygon"); }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) {  // clockwise
+                 j["objects"][0]["polygon"] = Json::array({{0.0, 0.6}, {0.5, -0.25}, {-0.5, -0.25}});
+               }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["dimensions"]["sides"] = 2; }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["dimensions"]["sides"] = 3.5; }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["dimensions"].erase("height"); }).empty());
+  EXPECT_TRUE(problems_with([](Json& j) { j["objects"][0]["dimensions"].erase("side"); }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][1].erase("regular"); }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][1]["vertices"].erase(3); }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][1]["shape"] = "box"; }).empty());
 }
 
 TEST(ResultSchema, FindsViolations) {
@@ -280,6 +358,10 @@ TEST(ResultSchema, FindsViolations) {
   EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["keypoints"]["edge"] = -1; }).empty());
   EXPECT_FALSE(problems_with([](Json& j) { j["points_used"] = 50000; }).empty());
   EXPECT_FALSE(problems_with([](Json& j) { j["timings_ms"]["total"] = "fast"; }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0].erase("extent"); }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["extent"]["size"][1] = -1.0; }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["extent"]["axes"][2][2] = 3.0; }).empty());
+  EXPECT_FALSE(problems_with([](Json& j) { j["objects"][0]["polygon"] = Json::array({{0, 0}, {1, 0}, {0, 1}}); }).empty());
   // A new shape name with its own dimensions is allowed by the contract.
   EXPECT_TRUE(problems_with([](Json& j) {
                 j["objects"][2]["shape"] = "torus";

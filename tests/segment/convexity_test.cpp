@@ -5,6 +5,7 @@
 #include "config/pipeline_config.hpp"
 #include "segment/segment_scene.hpp"
 #include "synth/ground_truth.hpp"
+#include "synth/solid_visibility.hpp"
 #include "synth/synthetic_cloud.hpp"
 
 namespace cloudshape::segment {
@@ -28,11 +29,14 @@ Split split(const std::vector<synth::SolidSpec>& solids, std::size_t points, std
   synth::CloudOptions opts;
   opts.points = points;
   opts.view = view;
-  // Each solid sampled alone so that every point's solid is known.
+  // Each solid sampled alone so that every point's solid is known; in a view, what the other
+  // solids hide (a face where two touch, a top under what stands on it) is then removed, as a
+  // camera would not see it.
   PointList cloud;
   std::vector<std::size_t> solid_of;
   for (std::size_t k = 0; k < solids.size(); ++k) {
-    const PointList part = synth::make_synthetic_cloud({solids[k]}, opts, seed + k).points;
+    PointList part = synth::make_synthetic_cloud({solids[k]}, opts, seed + k).points;
+    if (view) part = synth::visible_on_solids(part, solids, *view);
     cloud.insert(cloud.end(), part.begin(), part.end());
     solid_of.insert(solid_of.end(), part.size(), k);
   }
@@ -61,11 +65,9 @@ TEST(SegmentConvexity, OneSolidsFacesStayTogether) {
   }
 }
 
-// DISABLED (issue 10, left): unorganized clouds have no viewpoint, and normals oriented away from
-// a component's centroid point the wrong way near where two solids meet, so the valley between
-// them reads as convex; the solids stay one segment. Organized clouds orient towards the sensor.
-// A box on a box: the lower box's top meets the upper box's sides in a concave valley.
-TEST(SegmentConvexity, DISABLED_ABoxOnABoxComesApart) {
+// A box on a box: the lower box's top meets the upper box's sides in a concave valley. (Disabled
+// before because the lower box's top under the upper box, which no camera sees, was sampled.)
+TEST(SegmentConvexity, ABoxOnABoxComesApart) {
   const Split s = split({synth::make_solid(synth::ShapeKind::box, {4, 3, 1}, at(0, 0, 0.5)),
                          synth::make_solid(synth::ShapeKind::box, {2, 1.5, 1}, at(0.3, 0.2, 1.5))},
                         20000, 5, Eigen::Vector3d(3, -6, 7));
@@ -76,6 +78,10 @@ TEST(SegmentConvexity, DISABLED_ABoxOnABoxComesApart) {
 
 // Two boxes of different heights side by side, touching: the taller one's side rises from the
 // lower one's top in a valley.
+// DISABLED (issue 10, left): the camera lies in the plane where the boxes touch, so the taller
+// one's side is seen edge-on (no points) and their fronts are one plane: no concave junction is
+// in view. Separating them needs a cut through the front along the lower box's top edge (CPC's
+// planar cuts, Schoeler et al. 2015), not a junction test.
 TEST(SegmentConvexity, DISABLED_TwoTouchingBoxesComeApart) {
   const Split s = split({synth::make_solid(synth::ShapeKind::box, {2, 2, 1}, at(0, 0, 0.5)),
                          synth::make_solid(synth::ShapeKind::box, {2, 2, 2}, at(2, 0, 1))},
@@ -86,6 +92,10 @@ TEST(SegmentConvexity, DISABLED_TwoTouchingBoxesComeApart) {
 }
 
 // Two spheres that touch: their surfaces meet at a point in a valley all round.
+// DISABLED (issue 10, left): whole surfaces and no viewpoint. Normals pointing away from the
+// centroid of both spheres turn inwards near the contact, where the valley is; carrying the
+// orientation over the graph (Hoppe's propagation, tried) carries one sphere's into the other at
+// the contact, where their normals are parallel, and split YCB cans and noisy clouds elsewhere.
 TEST(SegmentConvexity, DISABLED_TwoTouchingSpheresComeApart) {
   const Split s = split({synth::make_solid(synth::ShapeKind::sphere, {1.0}, at(0, 0, 0)),
                          synth::make_solid(synth::ShapeKind::sphere, {1.0}, at(2, 0, 0))},

@@ -34,7 +34,7 @@ struct Gate {
   std::string condition;
   std::size_t clouds;  // exactly this many: 6 shapes x 30, or every real sample of SOURCES.md
   double min_right_pct;
-  double max_dim_median;
+  double max_dim_median;       // < 0: not scored (negatives: an unknown has no dimensions)
   double max_dim_p90;
   double max_centre_median;    // < 0: not scored (the real samples have no pose truth)
   double max_axis_deg_median;  // < 0: likewise
@@ -69,6 +69,12 @@ const std::vector<Gate>& gates() {
       // real (15 samples at 20k points, not capped): 15/15 / 15/15; 0.210%, 1.092% / 0.21%,
       // 1.09%; 0, 0
       {"real", 15, 97.0, 0.0045, 0.0220, -1.0, -1.0, 1, 1},
+      // negatives (ellipsoid, torus, square pyramid, octahedron; 30 each): right = unknown.
+      // 76.7 (fast form, shapes branch): the octahedra are named box, cylinder or tetrahedron.
+      // Issue 11 asks 95 and none named: not met yet, this floor only guards what is reached.
+      {"negatives", 120, 73.5, -1.0, -1.0, -1.0, -1.0, 1, 1},
+      // new_shapes (30 frusta, noise 0.5%): 100; 0.13%, 1.66%; 0.05%; 0.10; 0, 0 (fast form)
+      {"new_shapes", 30, 97.0, 0.0030, 0.0350, 0.0010, 0.25, 1, 1},
   };
   return all;
 }
@@ -102,9 +108,11 @@ TEST_P(AccuracyGate, ConditionMeetsItsFloor) {
   ASSERT_EQ(all.at("shape"), "all");
   const std::string figures = "measured: " + all.dump();
   EXPECT_GE(all.at("recognized_pct").get<double>(), g.min_right_pct) << figures;
-  const Json& dim = all.at("dimension_error");
-  EXPECT_LE(number(dim.at("median"), "dimension error median"), g.max_dim_median) << figures;
-  EXPECT_LE(number(dim.at("p90"), "dimension error p90"), g.max_dim_p90) << figures;
+  if (g.max_dim_median >= 0) {
+    const Json& dim = all.at("dimension_error");
+    EXPECT_LE(number(dim.at("median"), "dimension error median"), g.max_dim_median) << figures;
+    EXPECT_LE(number(dim.at("p90"), "dimension error p90"), g.max_dim_p90) << figures;
+  }
   if (g.max_centre_median >= 0) {
     EXPECT_LE(number(all.at("centre_error_median"), "centre error"), g.max_centre_median)
         << figures;

@@ -164,7 +164,7 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
 }
 
 // The scene gate: all 45 labelled Kinect frames of mosd_learn, per category, floors a few
-// points under what the README's table shows (cloudshape-bench --scenes): objects named right,
+// points under docs/performance.md's table (cloudshape-bench --scenes): objects named right,
 // segmentation overlap, false objects and duplicates per scene. About 5 s.
 TEST_F(BenchScenes, MosdLearnPerCategoryFloors) {
   const fs::path learn = testing::shared_data_path("real/mosd_learn");
@@ -178,7 +178,8 @@ TEST_F(BenchScenes, MosdLearnPerCategoryFloors) {
     double right_pct;
     double iou;
   };
-  // README "Scenes": boxes 97.4%, stacked 100%, occluded 93.8%, cylindric 65.8%, all 86.6%;
+  // docs/performance.md "Scenes": boxes 97.4%, stacked 100%, occluded 93.8%, cylindric 65.8%,
+  // all 86.6%;
   // IoU 0.987, 0.978, 0.953, 0.951, 0.969.
   const std::vector<Floor> floors = {{"boxes", 38, 94.0, 0.96},
                                      {"stacked_boxes", 20, 95.0, 0.95},

@@ -6,11 +6,13 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "io/cloud_writers.hpp"
 #include "process.hpp"
+#include "solid_samples.hpp"
 #include "report/result_json.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -23,21 +25,12 @@ using Json = nlohmann::ordered_json;
 using testing::lines_of;
 using testing::ProcessResult;
 using testing::run_process;
+using testing::sample;
+using testing::solid;
 
 const std::string kBin = CLOUDSHAPE_RECOGNIZE_BIN;
 const std::string kPrefix = "cloudshape-recognize: ";
 
-// The solid behind sample(kind, n, seed): the same generator draws it first.
-synth::SolidSpec solid(synth::ShapeKind kind, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  return synth::random_solid(kind, rng, 40.0);
-}
-
-PointList sample(synth::ShapeKind kind, std::size_t n, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const synth::SolidSpec spec = synth::random_solid(kind, rng, 40.0);
-  return synth::sample_solid_surface(spec, n, rng);
-}
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -319,6 +312,67 @@ TEST_F(RecognizeCli, PrettyPrintsTheSameObject) {
   j.erase("timings_ms");
   c.erase("timings_ms");
   EXPECT_EQ(j, c);  // the same answer both times, timings aside
+}
+
+// --format table: a header, then one line per object carrying what the JSON says (dimensions
+// to four significant digits); unreadable files still go to stderr and set the exit status.
+TEST_F(RecognizeCli, TableFormatGivesOneLinePerObjectWithTheJsonFigures) {
+  const std::vector<std::string> files = {path("box.xyz"), path("cylinder.ply"),
+                                          path("coplanar.xyz")};
+  std::vector<std::string> args = {"--format", "table"};
+  args.insert(args.end(), files.begin(), files.end());
+  args.push_back(path("missing.pcd"));
+  const ProcessResult table = run(args);
+  EXPECT_EQ(table.exit_code, 2) << table.err;
+  EXPECT_EQ(failures_for(table, path("missing.pcd")).size(), 1u) << table.err;
+  const auto rows = lines_of(table.out);
+  const auto json = results(run(files));
+  ASSERT_EQ(json.size(), 3u);
+  ASSERT_EQ(rows.size(), 4u) << table.out;  // header + one object per cloud
+  EXPECT_EQ(rows[0].rfind("file", 0), 0u) << rows[0];
+  for (const char* column : {"shape", "dimensions", "confidence", "partial", "ms"})
+    EXPECT_NE(rows[0].find(column), std::string::npos) << column;
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const std::string& row = rows[i + 1];
+    std::istringstream words(row);
+    std::string source, shape;
+    words >> source >> shape;
+    const Json& o = json[i]["objects"][0];
+    EXPECT_EQ(source, json[i]["source"].get<std::string>()) << row;
+    EXPECT_EQ(shape, o["shape"].get<std::string>()) << row;
+    for (const auto& [name, value] : o["dimensions"].items()) {
+      const std::size_t at = row.find(" " + name + " ");
+      ASSERT_NE(at, std::string::npos) << name << " in: " << row;
+      const double shown = std::stod(row.substr(at + name.size() + 2));
+      EXPECT_NEAR(shown, value.get<double>(), 1e-3 * value.get<double>()) << name << ": " << row;
+    }
+    const std::string partial = o["partial"].get<bool>() ? " yes " : " no ";
+    EXPECT_NE(row.find(partial), std::string::npos) << row;
+  }
+  EXPECT_NE(rows[3].find("coplanar"), std::string::npos) << "the unknown's reason: " << rows[3];
+  EXPECT_EQ(table.out.find('{'), std::string::npos) << "no JSON in the table";
+}
+
+// A recording's clouds are named FILE#INDEX, longer than the file's name: the columns still
+// line up with the header.
+TEST_F(RecognizeCli, TableColumnsLineUpForARecordingsClouds) {
+  const ProcessResult record =
+      run({"--record", path("table.mcap"), "--record-clouds", path("box.xyz")});
+  ASSERT_EQ(record.exit_code, 0) << record.err;
+  const ProcessResult table = run({"--format", "table", path("table.mcap"), path("box.xyz")});
+  EXPECT_EQ(table.exit_code, 0) << table.err;
+  const auto rows = lines_of(table.out);
+  ASSERT_EQ(rows.size(), 3u) << table.out;
+  const std::size_t shape_column = rows[0].find("shape");
+  EXPECT_EQ(rows[1].rfind("table.mcap#0 ", 0), 0u) << rows[1];
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    EXPECT_EQ(rows[i].find("  box ") + 2, shape_column) << table.out;
+}
+
+TEST_F(RecognizeCli, UnknownFormatIsACommandLineError) {
+  const ProcessResult r = run({"--format", "xml", path("box.xyz")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty()) << r.out;
 }
 
 TEST_F(RecognizeCli, VerboseLogsStayOffStdout) {

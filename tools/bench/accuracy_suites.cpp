@@ -9,6 +9,10 @@
 #include <stdexcept>
 
 #include "accuracy_real.hpp"
+#include "synth/mesh_sampling.hpp"
+#include "synth/mesh_solids.hpp"
+#include "synth/negative_solid.hpp"
+#include "synth/pose.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/resting_pose.hpp"
 #include "synth/sample_solid.hpp"
@@ -223,11 +227,64 @@ TestCloud multi_object_cloud(std::size_t shape, std::uint64_t cloud_seed, double
   return cloud;
 }
 
+// The whole surface of a mesh solid, noise sigma 0.5% of its size.
+PointList noisy_mesh_points(const synth::SolidMesh& mesh, std::mt19937_64& rng, const SuiteOptions& o) {
+  PointList points =
+      synth::sample_mesh_surface(mesh.vertices, mesh.triangles, random_point_count(rng, o.max_points), rng);
+  std::normal_distribution<double> noise(0.0, 0.005 * mesh.size);
+  for (Point& p : points) p += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  return points;
+}
+
+// A solid outside the vocabulary, its whole surface, noise sigma 0.5% of its size. Its truth
+// is `unknown`, labelled with its kind; it has no pose to score.
+TestCloud negative_cloud(std::size_t kind, std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o) {
+  std::mt19937_64 rng(cloud_seed);
+  const synth::NegativeKind k = synth::all_negative_kinds()[kind];
+  const synth::SolidMesh mesh = synth::random_negative_solid(k, rng, o.solid_size);
+  TestCloud cloud;
+  cloud.points = noisy_mesh_points(mesh, rng, o);
+  Truth t;
+  t.shape = "unknown";
+  t.label = synth::to_string(k);
+  t.center = mesh.center;
+  t.size = mesh.size;
+  t.has_pose = false;
+  cloud.truths.push_back(t);
+  cloud.source = "negatives-" + t.label + "-" + std::to_string(i);
+  cloud.note = t.label;
+  return cloud;
+}
+
+// The shapes beyond the six (a frustum: radius and height log-uniform within 1:4, the top 25-80%
+// of the base), whole surface, noise sigma 0.5% of size.
+TestCloud new_shape_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o) {
+  std::mt19937_64 rng(cloud_seed);
+  const double height_over_radius = log_uniform(rng, 0.5, 4.0);
+  const double radius = o.solid_size / std::max(2.0, height_over_radius);
+  const double top = radius * std::uniform_real_distribution<double>(0.25, 0.8)(rng);
+  const synth::Pose pose = synth::random_pose(rng, o.solid_size);
+  const synth::SolidMesh mesh = synth::frustum_mesh(radius, top, radius * height_over_radius, pose);
+  TestCloud cloud;
+  cloud.points = noisy_mesh_points(mesh, rng, o);
+  Truth t;
+  t.shape = "frustum";
+  t.dimensions = {{"radius", radius}, {"top_radius", top}, {"height", radius * height_over_radius}};
+  t.center = pose.center;
+  t.axes = pose.axes;
+  t.size = mesh.size;
+  t.axis_checks = {{0, true}};
+  cloud.truths.push_back(t);
+  cloud.source = "new_shapes-frustum-" + std::to_string(i);
+  return cloud;
+}
+
 }  // namespace
 
 const std::vector<std::string>& accuracy_conditions() {
   static const std::vector<std::string> names = {
-      "clean", "noise", "outliers", "density", "single_view", "table_view", "multi", "real"};
+      "clean", "noise", "outliers", "density", "single_view", "table_view", "multi", "real", "negatives",
+      "new_shapes"};
   return names;
 }
 
@@ -248,11 +305,19 @@ std::string describe_condition(const std::string& c) {
     return "2-4 solids >1 size apart, the first of the row's shape; match by centre within 0.5 "
            "size (an unknown result has no centre: missed + false)";
   if (c == "real") return "YCB + ravens meshes, 20k points, seed 1; no pose truth";
+  if (c == "negatives")
+    return "solids none of the shapes (ellipsoid, torus, square pyramid, octahedron), whole, "
+           "noise sigma 0.5% of size; right = unknown";
+  if (c == "new_shapes")
+    return "shapes beyond the six (frustum), complete surface, noise sigma 0.5% of size";
   return {};
 }
 
 std::size_t suite_size(const std::string& condition, const SuiteOptions& o) {
   if (condition == "real") return present_real_samples(o.shared_data_dir).size();
+  if (condition == "negatives")
+    return static_cast<std::size_t>(std::max(o.count, 0)) * synth::all_negative_kinds().size();
+  if (condition == "new_shapes") return static_cast<std::size_t>(std::max(o.count, 0));
   return static_cast<std::size_t>(std::max(o.count, 0)) * synth::all_shape_kinds().size();
 }
 
@@ -264,10 +329,13 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
   // Stream ids in the order the conditions were added, not the report's, so a new condition
   // moves no existing cloud.
   static const std::vector<std::string> stream_order = {
-      "clean", "noise", "outliers", "single_view", "multi", "real", "table_view", "density"};
+      "clean", "noise", "outliers", "single_view", "multi", "real", "table_view", "density", "negatives",
+      "new_shapes"};
   const auto pos = std::find(stream_order.begin(), stream_order.end(), condition);
   if (pos == stream_order.end()) throw std::invalid_argument("unknown condition '" + condition + "'");
   const std::uint64_t cloud_seed = stream(o.seed, 2 + (pos - stream_order.begin()), shape, i);
+  if (condition == "negatives") return negative_cloud(shape, i, cloud_seed, o);
+  if (condition == "new_shapes") return new_shape_cloud(i, cloud_seed, o);
   const std::string source =
       condition + "-" + synth::to_string(synth::all_shape_kinds()[shape]) + "-" + std::to_string(i);
 

@@ -21,7 +21,8 @@ struct SuiteOptions {
   std::string shared_data_dir;  // holds real/ (the YCB and ravens meshes)
 };
 
-// clean, noise, outliers, density, single_view, table_view, multi, real: the report's order.
+// clean, noise, outliers, density, single_view, table_view, multi, real, negatives, new_shapes: the
+// report's order.
 const std::vector<std::string>& accuracy_conditions();
 
 // One line per condition saying how its clouds are made (printed with the table).

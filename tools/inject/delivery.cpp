@@ -9,6 +9,7 @@
 #include "dds/convert.hpp"
 #include "io/cloud_reader.hpp"
 #include "io/read_error.hpp"
+#include "recording.hpp"
 
 namespace cloudshape::inject {
 
@@ -21,6 +22,10 @@ FileCloud read_file_cloud(const std::string& path) {
   }
   if (cloud.points.empty()) throw std::runtime_error("no usable points");
   return FileCloud{std::move(cloud.points), std::move(cloud.grid)};
+}
+
+FileCloud read_pending_cloud(const PendingCloud& cloud) {
+  return cloud.message ? read_recorded_cloud(cloud.path, *cloud.message) : read_file_cloud(cloud.path);
 }
 
 Delivery::Delivery(dds::Participant& participant, RawWriter& writer, const DeliverySettings& settings,
@@ -65,7 +70,7 @@ bool Delivery::resend_overdue() {
   while (const auto c = pending_.resend_overdue(Clock::now(), after)) {
     FileCloud file;
     try {
-      file = read_file_cloud(c->path);
+      file = read_pending_cloud(*c);
     } catch (const std::exception& e) {
       say_(c->path + ": cannot send cloud " + std::to_string(c->id) + " again: " + e.what());
       pending_.complete(c->id, c->source);

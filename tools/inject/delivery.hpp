@@ -1,5 +1,6 @@
 // cloudshape-inject's clouds on their way: publishes each on the raw-cloud topic and, until
-// its result came back, sends it again whenever that result is overdue (README "No lost clouds").
+// its result came back, sends it again whenever that result is overdue (docs/reliability.md
+// "No lost clouds").
 #pragma once
 
 #include <atomic>
@@ -27,6 +28,8 @@ struct FileCloud {
 
 // The file's cloud; throws with the problem when it cannot be read or holds no point.
 FileCloud read_file_cloud(const std::string& path);
+// The cloud of a sent one, read again (from its file, or its recording's message).
+FileCloud read_pending_cloud(const PendingCloud& cloud);
 
 struct DeliverySettings {
   int subscribers = 1;           // ingest readers to wait for before each write

@@ -1,7 +1,8 @@
-// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--resend-after S] FILE_OR_DIR...
-// Reads clouds with io::read_cloud and publishes each on the raw-cloud topic (an organized one with
-// its pixels), once a subscriber (the ingest service) is there, then waits for each cloud's result
-// and sends again the clouds whose result is overdue (README "No lost clouds"). Reports on stderr.
+// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--topic NAME]... [--resend-after S] FILE_OR_DIR...
+// Reads clouds with io::read_cloud, and the PointCloud2 messages of .mcap recordings at their
+// recorded times, and publishes each on the raw-cloud topic (an organized one with its pixels),
+// once a subscriber (the ingest service) is there, then waits for each cloud's result and sends
+// again the clouds whose result is overdue (docs/reliability.md "No lost clouds"). Reports on stderr.
 // Exit: 0, 2 if a file was bad, 1 if no subscriber or a cloud got no result.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -16,7 +17,9 @@
 #include <vector>
 
 #include "dds/participant_cli.hpp"
+#include "io/mcap_clouds.hpp"
 #include "delivery.hpp"
+#include "recording.hpp"
 
 namespace {
 namespace cs = cloudshape;
@@ -32,7 +35,7 @@ void say(const std::string& text) { std::fprintf(stderr, "%s: %s\n", kTool, text
 bool is_cloud_file(const fs::path& p) {
   std::string ext = p.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".pcd" || ext == ".ply" || ext == ".xyz" || ext == ".txt";
+  return ext == ".pcd" || ext == ".ply" || ext == ".xyz" || ext == ".txt" || ext == ".mcap";
 }
 
 // Files as given; folders contribute their cloud files, sorted by name.
@@ -71,8 +74,13 @@ int main(int argc, char** argv) {
   std::size_t count = 0;
   cs::inject::DeliverySettings delivery_settings;
   std::vector<std::string> args;
+  std::vector<std::string> topics;
   cs::dds::add_participant_options(app, participant_args);
-  app.add_option("--rate", rate, "clouds per second (default: as fast as the pipeline takes them)");
+  app.add_option("--rate", rate,
+                 "clouds per second (default: as fast as the pipeline takes them; a recording at its "
+                 "recorded times)");
+  app.add_option("--topic", topics,
+                 "of .mcap recordings, replay only this PointCloud2 topic (repeat for more; default: all)");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--count", count, "send this many clouds in all, going round the files (e.g. a steady-rate run)");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
@@ -87,7 +95,7 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_option("--max-pending", delivery_settings.max_pending, "clouds sent but without result before sending waits (default 256)")
       ->check(CLI::PositiveNumber);
-  app.add_option("files", args, "cloud files or folders of them")->required();
+  app.add_option("files", args, "cloud files, .mcap recordings, or folders of them")->required();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -119,9 +127,56 @@ int main(int argc, char** argv) {
     std::map<std::string, cs::inject::FileCloud> read_once;
     const auto started = Clock::now();
     auto next = started;
+    // false when stopped.
+    const auto send = [&](const std::string& path, std::optional<std::size_t> message, const std::string& source,
+                          const cs::inject::FileCloud& file) {
+      if (rate > 0) {
+        std::this_thread::sleep_until(next);
+        next += std::chrono::duration_cast<Clock::duration>(period);
+      }
+      const cs::inject::PendingCloud cloud{id, path, source, now_ns(), Clock::now(), 1, message};
+      if (!delivery.send(cloud, file)) return false;
+      const std::string grid = file.grid.organized() ? ", " + std::to_string(file.grid.width) + " x " +
+                                                           std::to_string(file.grid.height) + " grid"
+                                                     : "";
+      say("sent " + source + " as cloud " + std::to_string(id) + " (" + std::to_string(file.points.size()) +
+          " points" + grid + ")");
+      ++id;
+      ++sent;
+      return true;
+    };
+    const cs::inject::ReplaySettings replay{{topics.begin(), topics.end()}, rate <= 0};
+    bool stopped = false;
     do {
       for (const std::string& path : files) {
-        if (g_stop || (count > 0 && sent >= count)) break;
+        if (stopped || g_stop || (count > 0 && sent >= count)) break;
+        const std::string name = fs::path(path).filename().string();
+        if (cs::io::is_mcap_path(path)) {
+          try {
+            const cs::inject::ReplayStats stats = cs::inject::replay_recording(
+                path, replay, g_stop,
+                [&](cs::inject::FileCloud&& file, std::size_t index) {
+                  if (count > 0 && sent >= count) return false;
+                  stopped = !send(path, index, name + "#" + std::to_string(index), file);
+                  return !stopped;
+                },
+                [&](const cs::io::ReadError& e) {
+                  say(e.what());
+                  status = 2;
+                });
+            if (stats.clouds == 0) say(path + ": no PointCloud2 message to replay");
+            if (replay.recorded_timing && stats.clouds > 0) {
+              char late[96];
+              std::snprintf(late, sizeof late, ": %zu cloud(s) replayed, at most %.3f s behind the recorded times",
+                            stats.clouds, stats.max_late_s);
+              say(path + late);
+            }
+          } catch (const cs::io::ReadError& e) {
+            say(e.what());
+            status = 2;
+          }
+          continue;
+        }
         cs::inject::FileCloud file;
         try {
           if (const auto found = read_once.find(path); found != read_once.end()) {
@@ -135,21 +190,9 @@ int main(int argc, char** argv) {
           status = 2;
           continue;
         }
-        if (rate > 0) {
-          std::this_thread::sleep_until(next);
-          next += std::chrono::duration_cast<Clock::duration>(period);
-        }
-        const cs::inject::PendingCloud cloud{id, path, fs::path(path).filename().string(), now_ns(), Clock::now(), 1};
-        if (!delivery.send(cloud, file)) break;
-        const std::string grid = file.grid.organized() ? ", " + std::to_string(file.grid.width) + " x " +
-                                                             std::to_string(file.grid.height) + " grid"
-                                                       : "";
-        say("sent " + path + " as cloud " + std::to_string(id) + " (" + std::to_string(file.points.size()) +
-            " points" + grid + ")");
-        ++id;
-        ++sent;
+        if (!send(path, std::nullopt, name, file)) stopped = true;
       }
-    } while ((loop || (count > 0 && sent < count && sent > 0)) && !g_stop);
+    } while ((loop || (count > 0 && sent < count && sent > 0)) && !g_stop && !stopped);
     const double seconds = std::chrono::duration<double>(Clock::now() - started).count();
     // Every cloud ends in a result: wait for the outstanding ones, sending again the overdue.
     const std::vector<std::uint64_t> missing = delivery.finish();

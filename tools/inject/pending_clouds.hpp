@@ -1,5 +1,5 @@
 // The clouds cloudshape-inject sent whose complete result it has not seen yet: an overdue
-// cloud is sent again, so none is lost (README "No lost clouds").
+// cloud is sent again, so none is lost (docs/reliability.md "No lost clouds").
 #pragma once
 
 #include <chrono>
@@ -21,6 +21,7 @@ struct PendingCloud {
   std::int64_t inject_time_ns = 0;  // of the first attempt: latency counts the recovery
   Clock::time_point last_sent;
   int attempts = 0;
+  std::optional<std::size_t> message;  // the PointCloud2 message of an .mcap path
 };
 
 // Thread-safe: the sender adds and resends, the result watcher completes.

@@ -7,7 +7,7 @@ CLOUDSHAPE_BUILD_PACKAGES=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libnanoflann-dev libyaml-cpp-dev libspdlog-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  liblzf-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev
+  liblzf-dev liblz4-dev libzstd-dev zlib1g-dev libtinyobjloader-dev libcli11-dev nlohmann-json3-dev libcairo2-dev
   libfastrtps-dev libfastcdr-dev fastddsgen
 )
 # The one list tools/test.sh and tools/demo.sh install: the build plus what the default tests
@@ -79,6 +79,28 @@ cs_ensure_packages() {
     || cs_die "apt-get install failed"
   mapfile -t missing < <(cs_missing_packages "${wanted[@]}")
   ((${#missing[@]} == 0)) || cs_die "still missing after install: ${missing[*]}"
+}
+
+# The npm packages of the MCAP interop test (tests/interop/mcap-node), exactly as its
+# package-lock.json pins them (npm ci). Node.js and npm come from Debian when the machine has
+# neither (a machine with a newer Node.js keeps it). Runs npm only when the lockfile changed.
+CLOUDSHAPE_NPM_DIRS=("$CLOUDSHAPE_REPO/tests/interop/mcap-node")
+cs_ensure_npm_packages() {
+  if ! command -v node >/dev/null 2>&1 || ! command -v npm >/dev/null 2>&1; then
+    cs_ensure_packages nodejs npm
+  fi
+  local dir stamp want
+  for dir in "${CLOUDSHAPE_NPM_DIRS[@]}"; do
+    stamp="$dir/node_modules/.cloudshape-lock.sha256"
+    want="$(sha256sum "$dir/package-lock.json" | cut -d' ' -f1)"
+    if [[ -f "$stamp" && "$(cat "$stamp")" == "$want" ]]; then
+      cs_log "npm: ${dir#"$CLOUDSHAPE_REPO"/} up to date"
+      continue
+    fi
+    cs_log "npm: npm ci in ${dir#"$CLOUDSHAPE_REPO"/}"
+    (cd "$dir" && npm ci --no-audit --no-fund --loglevel=error) >&2 || cs_die "npm ci failed in $dir"
+    printf '%s\n' "$want" >"$stamp"
+  done
 }
 
 # Configures (Release) and builds into CLOUDSHAPE_BUILD_DIR: every target, or only the targets

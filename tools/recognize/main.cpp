@@ -1,6 +1,10 @@
-// cloudshape-recognize [--config FILE] [--pretty] [--verbose] FILE...
+// cloudshape-recognize [--config FILE] [--format json|table] [--pretty] [--verbose]
+//                      [--render DIR] [--record OUT.mcap [--record-clouds]] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
-// file on stdout (JSON Lines; INTERFACE.md). stdout carries nothing else: logs go to stderr.
+// file, or per PointCloud2 message of a .mcap recording, on stdout (JSON Lines; INTERFACE.md),
+// or with --format table a header and one aligned line per object for a person. stdout
+// carries nothing else: logs go to stderr. --render DIR also writes DIR/<source>.png per
+// recognised cloud (docs/pictures.md).
 //
 // Exit status: 0 when every file was read and recognised; 2 when a file could not be read or
 // held no usable point (one "cloudshape-recognize: <file>: <problem>" line on stderr each, the
@@ -12,17 +16,22 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
-#include <filesystem>
+#include <chrono>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "cloud_inputs.hpp"
 #include "config/pipeline_config.hpp"
-#include "io/cloud_reader.hpp"
-#include "io/read_error.hpp"
+#include "io/pointcloud2_encode.hpp"
+#include "recording/result_recorder.hpp"
+#include "picture_folder.hpp"
 #include "pipeline/recognize.hpp"
+#include "render/picture_png.hpp"
 #include "report/result_json.hpp"
+#include "report/result_table.hpp"
 
 namespace {
 
@@ -41,11 +50,25 @@ void report_failure(const std::string& text) {
   std::fflush(stderr);
 }
 
-std::string read_error_text(const std::string& path, const cloudshape::io::ReadError& e) {
-  std::string text = path;
-  if (!e.place().empty()) text += ": " + e.place();
-  text += ": " + (e.problem().empty() ? std::string(e.what()) : e.problem());
-  return text;
+// A recording's cloud keeps its own header, time and topic; a file's gets the current time
+// in the configured frame, and its points as a PointCloud2 of the usual camera layout.
+void record(cloudshape::recording::ResultRecorder& recorder, const cloudshape::pipeline::RecognitionResult& result,
+            const cloudshape::recognize::InputCloud& in, const cloudshape::config::PipelineConfig& cfg) {
+  namespace cs = cloudshape;
+  if (in.recorded != nullptr) {
+    recorder.record(result, in.recorded->header, in.recorded->log_time, &in.recorded->message, in.recorded->topic);
+    return;
+  }
+  const auto now = static_cast<std::uint64_t>(
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::system_clock::now().time_since_epoch())
+          .count());
+  const cs::io::RosHeader header = cs::recording::file_header(now, cfg.ros2);
+  if (!recorder.records_clouds()) {
+    recorder.record(result, header, now);
+    return;
+  }
+  const cs::io::PointCloud2 cloud = cs::io::encode_pointcloud2(in.cloud.points, in.cloud.grid, {}, header);
+  recorder.record(result, header, now, &cloud);
 }
 
 void set_up_logging(bool verbose) {
@@ -62,19 +85,37 @@ int main(int argc, char** argv) {
   namespace cs = cloudshape;
 
   CLI::App app{
-      "Recognises the solid shapes in point-cloud files (.pcd, .ply, .xyz, .txt) and "
-      "prints one JSON line per file: shape, dimensions, 6-DoF pose, confidence.",
+      "Recognises the solid shapes in point-cloud files (.pcd, .ply, .xyz, .txt) and recordings "
+      "(.mcap: every sensor_msgs/msg/PointCloud2 message) and prints one JSON line per cloud: "
+      "shape, dimensions, 6-DoF pose, confidence.",
       kTool};
   std::string config_path;
+  std::string format = "json";
   bool pretty = false;
   bool verbose = false;
   std::vector<std::string> files;
+  std::string record_path;
+  bool record_clouds = false;
   app.add_option("--config", config_path,
                  "pipeline configuration (YAML); default: config/pipeline.yaml of the sources, "
                  "else built-in defaults");
+  app.add_option("--format", format,
+                 "json: one JSON object per file (the contract, default); table: one line per "
+                 "object for a person (file, shape, dimensions, confidence, partial, ms)")
+      ->check(CLI::IsMember({"json", "table"}));
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
-  app.add_option("files", files, "point-cloud files")->required();
+  std::string render_dir;
+  CLI::Option* render_option = app.add_option("--render", render_dir,
+                 "also write one PNG per cloud into DIR (created if missing): the points, each "
+                 "solid's wireframe and label, from the sensor's or principal axes' view and an "
+                 "oblique one");
+  app.add_option("--record", record_path,
+                 "also write the results to this MCAP file (Detection3DArray and MarkerArray per cloud, "
+                 "profile ros2: Foxglove and Lichtblick open it)");
+  app.add_flag("--record-clouds", record_clouds, "with --record: the input clouds too, as sensor_msgs/PointCloud2")
+      ->needs("--record");
+  app.add_option("files", files, "point-cloud files and MCAP recordings")->required();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -83,6 +124,18 @@ int main(int argc, char** argv) {
   }
 
   set_up_logging(verbose);
+  const bool table = format == "table";
+  cs::report::TableLayout layout;
+  if (table) {
+    std::vector<std::string> sources;
+    for (const auto& f : files) {
+      // A recording's clouds are named FILE#INDEX: room for indexes up to 5 digits.
+      std::string name = std::filesystem::path(f).filename().string();
+      if (std::filesystem::path(f).extension() == ".mcap") name += "#00000";
+      sources.push_back(name);
+    }
+    layout = cs::report::table_layout(sources);
+  }
 
   cs::config::PipelineConfig cfg;
   if (config_path.empty()) config_path = cs::config::default_pipeline_config_path();
@@ -98,58 +151,96 @@ int main(int argc, char** argv) {
     }
   }
 
+  std::optional<cs::tools::PictureFolder> pictures;
+  if (render_option->count() > 0) {
+    try {
+      pictures.emplace(render_dir);
+    } catch (const std::exception& e) {
+      report_failure(e.what());
+      return kExitBadInput;
+    }
+  }
+
   // The configuration's input limits: a bigger file is refused before it is read in full.
   const cs::io::ReadLimits limits{static_cast<std::size_t>(cfg.input.max_points),
                                   static_cast<std::size_t>(cfg.input.max_bytes)};
+  std::optional<cs::recording::ResultRecorder> recorder;
+  if (!record_path.empty()) {
+    try {
+      recorder.emplace(record_path, cs::recording::RecorderSettings{record_clouds, cs::io::McapCompression::zstd,
+                                                                    cfg.ros2, "/cloudshape/points"});
+    } catch (const std::exception& e) {
+      report_failure(e.what());
+      return kExitBadInput;
+    }
+  }
   int status = 0;
+  const auto fail = [&](const std::string& text) {
+    report_failure(text);
+    status = kExitBadInput;
+  };
+  if (table) std::cout << cs::report::table_header(layout) << '\n';
   for (const std::string& path : files) {
-    cs::io::CloudFile cloud;
+    cs::recognize::for_each_input_cloud(
+        path, limits,
+        [&](cs::recognize::InputCloud& in) {
+          const cs::io::CloudFile& cloud = in.cloud;
+          if (cloud.points.empty()) {
+            fail(in.where + ": no usable points" +
+                 (cloud.non_finite_dropped > 0
+                      ? " (" + std::to_string(cloud.non_finite_dropped) +
+                            " points read, all with NaN or infinite coordinates)"
+                      : " (the file holds no points)"));
+            return;
+          }
+          if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
+              far < cloud.points.size()) {
+            std::ostringstream text;
+            text << in.where << ": a point at (" << cloud.points[far].transpose()
+                 << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
+            fail(text.str());
+            return;
+          }
+          if (cloud.non_finite_dropped > 0) {
+            spdlog::info("{}: dropped {} points with NaN or infinite coordinates", in.where,
+                         cloud.non_finite_dropped);
+          }
+          spdlog::debug("{}: {} points ({})", in.where, cloud.points.size(), cloud.format);
+          try {
+            const cs::pipeline::RecognitionResult result =
+                cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, in.source);
+            if (table) {
+              for (const std::string& row : cs::report::table_rows(result, layout))
+                std::cout << row << '\n';
+            } else {
+              std::cout << (pretty ? cs::report::result_to_json_pretty(result)
+                                   : cs::report::result_to_json_line(result))
+                        << '\n';
+            }
+            std::cout << std::flush;
+            if (recorder) record(*recorder, result, in, cfg);
+            if (pictures) {
+              const std::filesystem::path png = pictures->path_for(in.source);
+              try {
+                cs::render::write_picture_png(cloud.points, cloud.grid, result, png.string());
+              } catch (const std::exception& e) {
+                fail(in.where + ": no picture: " + e.what());
+              }
+            }
+          } catch (const std::exception& e) {
+            report_failure(in.where + ": recognition failed: " + e.what());
+            if (status == 0) status = kExitInternal;
+          }
+        },
+        fail);
+  }
+  if (recorder) {
     try {
-      cloud = cs::io::read_cloud(path, limits);
-    } catch (const cs::io::ReadError& e) {
-      report_failure(read_error_text(path, e));
-      status = kExitBadInput;
-      continue;
+      recorder->close();
+      spdlog::info("{}: {} messages recorded", record_path, recorder->messages());
     } catch (const std::exception& e) {
-      report_failure(path + ": " + e.what());
-      status = kExitBadInput;
-      continue;
-    }
-    if (cloud.points.empty()) {
-      report_failure(path + ": no usable points" +
-                     (cloud.non_finite_dropped > 0
-                          ? " (" + std::to_string(cloud.non_finite_dropped) +
-                                " points read, all with NaN or infinite coordinates)"
-                          : " (the file holds no points)"));
-      status = kExitBadInput;
-      continue;
-    }
-    if (const std::size_t far = cs::first_point_beyond(cloud.points, cfg.input.max_coordinate);
-        far < cloud.points.size()) {
-      std::ostringstream text;
-      text << path << ": a point at (" << cloud.points[far].transpose()
-           << "), beyond input.max_coordinate " << cfg.input.max_coordinate;
-      report_failure(text.str());
-      status = kExitBadInput;
-      continue;
-    }
-    if (cloud.non_finite_dropped > 0) {
-      spdlog::info("{}: dropped {} points with NaN or infinite coordinates", path,
-                   cloud.non_finite_dropped);
-    }
-    spdlog::debug("{}: {} points ({})", path, cloud.points.size(), cloud.format);
-
-    const std::string source = std::filesystem::path(path).filename().string();
-    try {
-      const cs::pipeline::RecognitionResult result =
-          cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, source);
-      std::cout << (pretty ? cs::report::result_to_json_pretty(result)
-                           : cs::report::result_to_json_line(result))
-                << '\n'
-                << std::flush;
-    } catch (const std::exception& e) {
-      report_failure(path + ": recognition failed: " + e.what());
-      if (status == 0) status = kExitInternal;
+      report_failure(e.what());
+      return kExitInternal;
     }
   }
   return status;

@@ -2,6 +2,7 @@
 #include "arguments.hpp"
 #include "cloud_output.hpp"
 #include "commands.hpp"
+#include "mesh_shape.hpp"
 #include "synth/ground_truth_json.hpp"
 #include "synth/pose.hpp"
 #include "synth/synthetic_cloud.hpp"
@@ -32,6 +33,20 @@ struct ShapeArgs {
 
 void run_shape(const ShapeArgs& args) {
   check_output_path(args.output);
+  if (is_mesh_shape(args.shape)) {
+    if (args.outliers > 0.0 || !args.density_from.empty() || args.patchy > 0.0)
+      throw std::invalid_argument("--shape " + args.shape + ": --outliers, --density-from and --patchy are not supported");
+    MeshShapeRequest request;
+    request.shape = args.shape;
+    request.values = parse_numbers(args.dims, "--dims");
+    request.random_pose = args.random_pose;
+    request.points = args.points;
+    request.noise = args.noise;
+    if (!args.view.empty()) request.view = parse_point(args.view, "--view");
+    request.seed = args.seed;
+    run_mesh_shape(request, args.output, args.pcd_encoding);
+    return;
+  }
   const auto encoding = parse_pcd_encoding(args.pcd_encoding);
   const auto kind = synth::shape_kind_from_string(args.shape);
   if (!kind) throw std::invalid_argument("--shape: unknown shape '" + args.shape + "'");
@@ -76,11 +91,12 @@ void add_shape_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "shape", "Sample one solid; writes OUT and its ground truth OUT.json (same stem).");
   cmd->add_option("--shape", args->shape,
-                  "box, tetrahedron, pentagonal_prism, cone, cylinder, sphere")
+                  "box, tetrahedron, pentagonal_prism, cone, cylinder, sphere, frustum")
       ->required();
   cmd->add_option("--dims", args->dims,
                   "Comma-separated, INTERFACE.md order: box L,W,H; tetrahedron EDGE; "
-                  "pentagonal_prism SIDE,HEIGHT; cone/cylinder RADIUS,HEIGHT; sphere RADIUS")
+                  "pentagonal_prism SIDE,HEIGHT; cone/cylinder RADIUS,HEIGHT; sphere RADIUS; "
+                  "frustum RADIUS,TOP_RADIUS,HEIGHT")
       ->required();
   cmd->add_option("--points", args->points, "Surface points (before outliers)")
       ->check(CLI::PositiveNumber)

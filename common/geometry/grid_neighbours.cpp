@@ -1,0 +1,315 @@
+#include "geometry/grid_neighbours.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "geometry/detail/flat_hash.hpp"
+#include "geometry/kdtree.hpp"
+#include "geometry/voxel_grid.hpp"
+
+namespace cloudshape::geometry {
+namespace {
+
+// Cell coordinates carry one cell of margin below and above, like voxel_grid_downsample's.
+constexpr double kMaxCells = double((1 << 21) - 4);
+// Rounding in a point's position within its cell, in cells: the bounds below give this away.
+constexpr double kSlack = 1e-8;
+
+std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
+  return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z);
+}
+
+// The same sum, in the same order, as nanoflann's L2_Simple_Adaptor: equal distances to the bit.
+double squared_distance(const Point& a, const Point& b) {
+  double d2 = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double diff = a[i] - b[i];
+    d2 += diff * diff;
+  }
+  return d2;
+}
+
+// The points binned into cubic cells: the members of each occupied cell in increasing index.
+class Grid {
+ public:
+  Grid(const PointList& points, const Bounds& b, double cell) : map_(points.size() / 4 + 16) {
+    origin_ = b.min;
+    cell_ = cell;
+    inv_ = 1.0 / cell;
+    const Eigen::Vector3d extent = (b.max - b.min) * inv_;
+    valid_ = cell > 0.0 && std::isfinite(inv_) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
+    if (!valid_) return;
+    cell_of_.resize(points.size());
+    std::vector<std::uint32_t> count;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto c = coords(points[i]);
+      bool inserted = false;
+      const std::uint32_t s =
+          map_.find_or_insert(key_of(c[0], c[1], c[2]), static_cast<std::uint32_t>(count.size()), inserted);
+      if (inserted) count.push_back(0);
+      ++count[s];
+      cell_of_[i] = s;
+    }
+    begin_.assign(count.size() + 1, 0);
+    for (std::size_t s = 0; s < count.size(); ++s) begin_[s + 1] = begin_[s] + count[s];
+    members_.resize(points.size());
+    std::vector<std::uint32_t> next(begin_.begin(), begin_.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) members_[next[cell_of_[i]]++] = static_cast<std::uint32_t>(i);
+  }
+
+  bool valid() const { return valid_; }
+  std::size_t cells() const { return begin_.empty() ? 0 : begin_.size() - 1; }
+
+  std::array<std::int64_t, 3> coords(const Point& p) const {
+    const Eigen::Vector3d q = (p - origin_) * inv_;
+    return {static_cast<std::int64_t>(q.x()) + 1, static_cast<std::int64_t>(q.y()) + 1,
+            static_cast<std::int64_t>(q.z()) + 1};
+  }
+
+  // How far p is, at least, from any point outside the block of cells within `ring` of its own.
+  double reach(const Point& p, std::int64_t ring) const {
+    const Eigen::Vector3d q = (p - origin_) * inv_;
+    double margin = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      const double f = q[a] - std::floor(q[a]);
+      margin = std::min({margin, f, 1.0 - f});
+    }
+    return std::max(0.0, margin + static_cast<double>(ring) - kSlack) * cell_;
+  }
+
+  // Calls f(member index) for every point in the cells exactly `ring` cells (Chebyshev) from c.
+  template <class F>
+  void for_ring(const std::array<std::int64_t, 3>& c, std::int64_t ring, F&& f) const {
+    for (std::int64_t dx = -ring; dx <= ring; ++dx) {
+      for (std::int64_t dy = -ring; dy <= ring; ++dy) {
+        for (std::int64_t dz = -ring; dz <= ring; ++dz) {
+          if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != ring) continue;
+          const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+          if (x < 0 || y < 0 || z < 0 || x > kMaxCells + 2 || y > kMaxCells + 2 || z > kMaxCells + 2) continue;
+          const std::uint32_t s = map_.find(key_of(x, y, z));
+          if (s == detail::CellMap::kAbsent) continue;
+          for (std::uint32_t m = begin_[s]; m < begin_[s + 1]; ++m) f(members_[m]);
+        }
+      }
+    }
+  }
+
+  std::uint32_t cell_of(std::size_t i) const { return cell_of_[i]; }
+  const std::uint32_t* members_begin(std::uint32_t s) const { return members_.data() + begin_[s]; }
+  const std::uint32_t* members_end(std::uint32_t s) const { return members_.data() + begin_[s + 1]; }
+
+ private:
+  detail::CellMap map_;
+  Point origin_ = Point::Zero();
+  double cell_ = 0.0;
+  double inv_ = 0.0;
+  bool valid_ = false;
+  std::vector<std::uint32_t> cell_of_;
+  std::vector<std::uint32_t> begin_;
+  std::vector<std::uint32_t> members_;
+};
+
+// A cell about twice the cloud's spacing, its points spread over the bounding box's faces (a
+// surface) or along its longest edge (a line), whichever is coarser: a few points per cell, and
+// the nearest within the cell's own block.
+double spacing_cell(const Bounds& b, std::size_t count) {
+  const Eigen::Vector3d e = b.max - b.min;
+  const double n = static_cast<double>(count);
+  const double faces = 2.0 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
+  return std::max({2.0 * std::sqrt(faces / n), 2.0 * e.maxCoeff() / n, e.maxCoeff() / kMaxCells * 2.0});
+}
+
+double brute_nearest_other(const PointList& points, std::size_t i) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    if (j != i) best = std::min(best, squared_distance(points[i], points[j]));
+  }
+  return best;
+}
+
+bool closer(double da, std::uint32_t ia, double db, std::uint32_t ib) { return da < db || (da == db && ia < ib); }
+
+}  // namespace
+
+std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries) {
+  std::vector<double> out(queries.size(), 0.0);
+  if (points.size() < 2) return out;
+  const Bounds box = bounding_box(points);
+  const double cell = spacing_cell(box, points.size());
+  const double inv = 1.0 / cell;
+  const Eigen::Vector3d extent = (box.max - box.min) * inv;
+  const bool valid = cell > 0.0 && std::isfinite(inv) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
+  std::vector<std::size_t> hard;
+  if (!valid) {
+    for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
+  } else {
+    const auto coords = [&](const Point& p) {
+      const Eigen::Vector3d c = (p - box.min) * inv;
+      return std::array<std::int64_t, 3>{static_cast<std::int64_t>(c.x()) + 1, static_cast<std::int64_t>(c.y()) + 1,
+                                         static_cast<std::int64_t>(c.z()) + 1};
+    };
+    // The cells of every query's 27-cell block, each with the queries it serves: then one pass
+    // over the points, a lookup each, instead of binning them all.
+    detail::CellMap blocks(queries.size() * 27);
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
+    pairs.reserve(queries.size() * 27);
+    std::uint32_t block_cells = 0;
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const auto c = coords(points[queries[q]]);
+      for (std::int64_t dx = -1; dx <= 1; ++dx) {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+          for (std::int64_t dz = -1; dz <= 1; ++dz) {
+            bool inserted = false;
+            const std::uint32_t b = blocks.find_or_insert(key_of(c[0] + dx, c[1] + dy, c[2] + dz), block_cells, inserted);
+            block_cells += inserted ? 1 : 0;
+            pairs.emplace_back(b, static_cast<std::uint32_t>(q));
+          }
+        }
+      }
+    }
+    std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
+    for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
+    for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
+    std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
+    for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
+    std::vector<double> best(queries.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto c = coords(points[i]);
+      const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
+      if (slot == detail::CellMap::kAbsent) continue;
+      for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
+        const std::uint32_t q = cell_queries[e];
+        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+      }
+    }
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      const Eigen::Vector3d u = (points[queries[q]] - box.min) * inv;
+      double margin = 1.0;
+      for (int a = 0; a < 3; ++a) {
+        const double f = u[a] - std::floor(u[a]);
+        margin = std::min({margin, f, 1.0 - f});
+      }
+      const double reach = std::max(0.0, margin + 1.0 - kSlack) * cell;
+      if (best[q] <= reach * reach) {
+        out[q] = std::sqrt(best[q]);
+      } else {
+        hard.push_back(q);
+      }
+    }
+  }
+  // Far from everything (an outlier) or a degenerate grid: a scan for a few, else a kd-tree.
+  // (A kd-tree costs a few hundred distances' worth per point to build: a scan is cheaper for few.)
+  if (hard.size() <= 32) {
+    for (std::size_t q : hard) out[q] = std::sqrt(brute_nearest_other(points, queries[q]));
+  } else {
+    const KdTree tree(points);
+    std::vector<std::uint32_t> idx;
+    std::vector<double> d2;
+    for (std::size_t q : hard) {
+      tree.knn(points[queries[q]], 2, idx, &d2);
+      out[q] = d2.size() < 2 ? 0.0 : std::sqrt(d2[1]);
+    }
+  }
+  return out;
+}
+
+void all_nearest_neighbours(const PointList& points, std::size_t k, double cell, std::vector<std::uint32_t>& out) {
+  const std::size_t n = points.size();
+  k = std::min(k, n);
+  out.assign(n * k, 0);
+  if (k == 0) return;
+  const Grid grid(points, bounding_box(points), cell);
+  std::vector<std::uint32_t> hard;
+  if (!grid.valid()) {
+    hard.resize(n);
+    for (std::size_t i = 0; i < n; ++i) hard[i] = static_cast<std::uint32_t>(i);
+  } else {
+    // One candidate list per cell (its 27-cell block), shared by every point of the cell, its
+    // coordinates apart so that the distances to all of them vectorise.
+    std::vector<std::uint8_t> cell_done(grid.cells(), 0);
+    std::vector<std::uint32_t> candidates;
+    std::vector<double> cx, cy, cz, dist;
+    std::vector<std::uint32_t> near;
+    std::vector<double> best_d(k);
+    std::vector<std::uint32_t> best_i(k);
+    for (std::size_t first = 0; first < n; ++first) {
+      const std::uint32_t s = grid.cell_of(first);
+      if (cell_done[s]) continue;
+      cell_done[s] = 1;
+      candidates.clear();
+      const auto c = grid.coords(points[first]);
+      for (std::int64_t ring = 0; ring <= 1; ++ring) {
+        grid.for_ring(c, ring, [&](std::uint32_t j) { candidates.push_back(j); });
+      }
+      const std::size_t m = candidates.size();
+      cx.resize(m);
+      cy.resize(m);
+      cz.resize(m);
+      dist.resize(m);
+      near.resize(m);
+      for (std::size_t j = 0; j < m; ++j) {
+        cx[j] = points[candidates[j]].x();
+        cy[j] = points[candidates[j]].y();
+        cz[j] = points[candidates[j]].z();
+      }
+      for (const std::uint32_t* it = grid.members_begin(s); it != grid.members_end(s); ++it) {
+        const std::uint32_t i = *it;
+        const double qx = points[i].x(), qy = points[i].y(), qz = points[i].z();
+        // squared_distance's sum, term by term. Only points within the block's reach can be
+        // among the k nearest, unless fewer than k are: then the kd-tree answers.
+        const double reach = grid.reach(points[i], 1);
+        const double limit = reach * reach;
+        std::size_t within = 0;
+        for (std::size_t j = 0; j < m; ++j) {
+          const double dx = qx - cx[j], dy = qy - cy[j], dz = qz - cz[j];
+          double d = dx * dx;
+          d += dy * dy;
+          d += dz * dz;
+          dist[within] = d;
+          near[within] = candidates[j];
+          within += d <= limit ? 1 : 0;
+        }
+        if (within < k) {
+          hard.push_back(i);
+          continue;
+        }
+        std::size_t count = 0;
+        for (std::size_t j = 0; j < within; ++j) {
+          const double d = dist[j];
+          const std::uint32_t id = near[j];
+          if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) continue;
+          std::size_t at = count < k ? count++ : k - 1;
+          while (at > 0 && closer(d, id, best_d[at - 1], best_i[at - 1])) {
+            best_d[at] = best_d[at - 1];
+            best_i[at] = best_i[at - 1];
+            --at;
+          }
+          best_d[at] = d;
+          best_i[at] = id;
+        }
+        std::copy(best_i.begin(), best_i.end(), out.begin() + static_cast<std::ptrdiff_t>(i * k));
+      }
+    }
+  }
+  if (hard.empty()) return;
+  // Sparse spots (a line of points, an outlier): the k-th neighbour lies beyond the block.
+  const KdTree tree(points);
+  std::vector<std::uint32_t> idx;
+  std::vector<double> d2;
+  std::vector<std::pair<double, std::uint32_t>> ranked;
+  for (std::uint32_t i : hard) {
+    // Every point as near as the k-th, so that a tie at the k-th goes by index too.
+    tree.knn(points[i], k, idx, &d2);
+    std::vector<std::uint32_t> tied;
+    tree.radius(points[i], std::max(std::sqrt(d2.back()) * (1.0 + 1e-9), 1e-150), tied);
+    if (tied.size() >= k) idx.swap(tied);
+    ranked.clear();
+    for (std::uint32_t j : idx) ranked.emplace_back(squared_distance(points[i], points[j]), j);
+    std::sort(ranked.begin(), ranked.end());
+    for (std::size_t j = 0; j < k; ++j) out[i * k + j] = ranked[j].second;
+  }
+}
+
+}  // namespace cloudshape::geometry

@@ -1,0 +1,21 @@
+// Exact nearest-neighbour searches on a uniform hash grid: one linear binning pass instead of
+// a kd-tree's sorting, for queries whose neighbours lie within a cell or two, with the same answers.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::geometry {
+
+// Distance from points[i] to its nearest other point, for each i of `queries`, in their order
+// (exact: a query whose neighbour the grid cannot vouch for is answered by a kd-tree).
+std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries);
+
+// The k nearest points (itself included) of every point, nearest first: row i of the
+// n x min(k, n) result in `out`. `cell` should be about the k-th neighbour's distance (a larger
+// one costs more distances, a smaller one more kd-tree fall-backs); ties go by index.
+void all_nearest_neighbours(const PointList& points, std::size_t k, double cell, std::vector<std::uint32_t>& out);
+
+}  // namespace cloudshape::geometry

@@ -1,0 +1,115 @@
+// The grid's nearest-neighbour answers against brute force: exactly the same distances and
+// neighbours, on a surface, a volume, a line with an outlier, and a degenerate cloud.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "geometry/grid_neighbours.hpp"
+
+namespace cloudshape::geometry {
+namespace {
+
+double sq(const Point& a, const Point& b) {
+  double d = 0.0;
+  for (int i = 0; i < 3; ++i) d += (a[i] - b[i]) * (a[i] - b[i]);
+  return d;
+}
+
+// Each point's k nearest by brute force, nearest first, ties by index.
+std::vector<std::uint32_t> brute_knn(const PointList& pts, std::size_t i, std::size_t k) {
+  std::vector<std::pair<double, std::uint32_t>> all;
+  for (std::size_t j = 0; j < pts.size(); ++j) all.emplace_back(sq(pts[i], pts[j]), static_cast<std::uint32_t>(j));
+  std::sort(all.begin(), all.end());
+  std::vector<std::uint32_t> out;
+  for (std::size_t j = 0; j < k; ++j) out.push_back(all[j].second);
+  return out;
+}
+
+PointList sphere_surface(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 1.0);
+  PointList pts;
+  for (std::size_t i = 0; i < n; ++i) pts.push_back(Point(g(rng), g(rng), g(rng)).normalized() * 5.0);
+  return pts;
+}
+
+PointList volume(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-3.0, 3.0);
+  PointList pts;
+  for (std::size_t i = 0; i < n; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  return pts;
+}
+
+PointList line_with_outlier() {
+  PointList pts;
+  for (int i = 0; i < 300; ++i) pts.emplace_back(0.01 * i, 0.0, 0.0);
+  pts.emplace_back(100.0, 50.0, -20.0);
+  return pts;
+}
+
+void expect_nearest_other_exact(const PointList& pts) {
+  std::vector<std::uint32_t> queries;
+  for (std::uint32_t i = 0; i < pts.size(); i += 7) queries.push_back(i);
+  const std::vector<double> got = nearest_other_distances(pts, queries);
+  ASSERT_EQ(got.size(), queries.size());
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      if (j != queries[q]) best = std::min(best, sq(pts[queries[q]], pts[j]));
+    }
+    EXPECT_EQ(got[q], std::sqrt(best)) << "query " << queries[q];  // bit-exact: the same sum
+  }
+}
+
+void expect_knn_exact(const PointList& pts, std::size_t k, double cell) {
+  std::vector<std::uint32_t> got;
+  all_nearest_neighbours(pts, k, cell, got);
+  ASSERT_EQ(got.size(), pts.size() * k);
+  for (std::size_t i = 0; i < pts.size(); i += 5) {
+    const std::vector<std::uint32_t> want = brute_knn(pts, i, k);
+    for (std::size_t j = 0; j < k; ++j) ASSERT_EQ(got[i * k + j], want[j]) << "point " << i << " rank " << j;
+  }
+}
+
+TEST(GridNeighbours, NearestOtherIsExactOnSurfaceVolumeAndLine) {
+  expect_nearest_other_exact(sphere_surface(4000, 1));
+  expect_nearest_other_exact(volume(3000, 2));
+  expect_nearest_other_exact(line_with_outlier());
+}
+
+TEST(GridNeighbours, DuplicatesAndIdenticalPointsGiveZero) {
+  PointList pts = sphere_surface(500, 3);
+  pts.push_back(pts[10]);
+  const std::vector<double> d = nearest_other_distances(pts, {10, 500});
+  EXPECT_EQ(d[0], 0.0);
+  EXPECT_EQ(d[1], 0.0);
+  const PointList same(20, Point(1.0, 2.0, 3.0));
+  EXPECT_EQ(nearest_other_distances(same, {0, 19}), std::vector<double>({0.0, 0.0}));
+}
+
+TEST(GridNeighbours, KnnIsExactForAnyCellSize) {
+  const PointList surface = sphere_surface(3000, 4);
+  // Cells about the 16th neighbour's distance, far smaller (kd-tree fall-backs) and larger.
+  expect_knn_exact(surface, 16, 0.6);
+  expect_knn_exact(surface, 16, 0.05);
+  expect_knn_exact(surface, 16, 3.0);
+  expect_knn_exact(volume(2000, 5), 8, 0.5);
+  expect_knn_exact(line_with_outlier(), 16, 0.03);
+}
+
+TEST(GridNeighbours, FewerPointsThanK) {
+  const PointList pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 2, 0)};
+  std::vector<std::uint32_t> got;
+  all_nearest_neighbours(pts, 16, 1.0, got);
+  EXPECT_EQ(got, std::vector<std::uint32_t>({0, 1, 2, 1, 0, 2, 2, 0, 1}));
+  const PointList same(20, Point(1.0, 2.0, 3.0));
+  all_nearest_neighbours(same, 4, 0.0, got);  // no grid: every point by the kd-tree, ties by index
+  ASSERT_EQ(got.size(), 80u);
+  EXPECT_EQ(std::vector<std::uint32_t>(got.begin() + 4, got.begin() + 8), std::vector<std::uint32_t>({0, 1, 2, 3}));
+}
+
+}  // namespace
+}  // namespace cloudshape::geometry

@@ -1,0 +1,18 @@
+// Shared by the tests of the shapes beyond the six and of the negatives: a mesh solid sampled
+// (optionally noisy) and recognised with the shipped configuration.
+#pragma once
+
+#include <cstdint>
+
+#include "pipeline/result.hpp"
+#include "synth/mesh_solids.hpp"
+
+namespace cloudshape::newshapes {
+
+// `points` area-uniform points of the mesh, Gaussian noise sigma `noise` x its size.
+PointList sample(const synth::SolidMesh& mesh, std::size_t points, double noise, std::uint64_t seed);
+
+// recognize_cloud with config/pipeline.yaml; the cloud must give exactly one object.
+pipeline::ObjectResult recognise_one(const PointList& cloud);
+
+}  // namespace cloudshape::newshapes

@@ -1,0 +1,83 @@
+// Unorganized clouds: each voxel node is the centroid of its points, neighbours are mutual, and
+// each node's normal is that of its normal_neighbours nearest nodes (brute force, same tolerance).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "config/stage_configs.hpp"
+#include "geometry/pca.hpp"
+#include "segment/neighbour_graph.hpp"
+
+namespace cloudshape::segment {
+namespace {
+
+// The surface of a tilted 40 x 30 x 20 box, sampled at random.
+PointList tilted_box(std::size_t n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const Eigen::Vector3d size(40.0, 30.0, 20.0);
+  const double areas[3] = {size.y() * size.z(), size.x() * size.z(), size.x() * size.y()};
+  const Eigen::Matrix3d turn =
+      (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX())).matrix();
+  PointList pts;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pick = u(rng) * (areas[0] + areas[1] + areas[2]);
+    const int axis = pick < areas[0] ? 0 : pick < areas[0] + areas[1] ? 1 : 2;
+    Eigen::Vector3d p(u(rng) * size.x(), u(rng) * size.y(), u(rng) * size.z());
+    p[axis] = u(rng) < 0.5 ? 0.0 : size[axis];
+    pts.push_back(turn * p + Eigen::Vector3d(5.0, -3.0, 2.0));
+  }
+  return pts;
+}
+
+TEST(SegmentVoxelGraph, NodesAreTheCentroidsOfTheirPointsAndNeighboursAreMutual) {
+  const PointList pts = tilted_box(30000, 1);
+  const NeighbourGraph g = build_voxel_graph(pts, config::SegmentConfig{});
+  ASSERT_GT(g.size(), 1000u);
+  std::vector<Eigen::Vector3d> sum(g.size(), Eigen::Vector3d::Zero());
+  std::vector<std::size_t> count(g.size(), 0);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    ASSERT_LT(g.node_of_point[i], g.size());
+    sum[g.node_of_point[i]] += pts[i];
+    ++count[g.node_of_point[i]];
+  }
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    ASSERT_GT(count[n], 0u);
+    EXPECT_LT((sum[n] / static_cast<double>(count[n]) - g.nodes[n]).norm(), 1e-9);
+    g.for_neighbours(n, [&](std::uint32_t m) {
+      bool back = false;
+      g.for_neighbours(m, [&](std::uint32_t o) { back = back || o == n; });
+      EXPECT_TRUE(back) << n << " -> " << m;
+    });
+  }
+}
+
+TEST(SegmentVoxelGraph, NormalsAreThoseOfTheNearestNodes) {
+  const config::SegmentConfig cfg;
+  const PointList pts = tilted_box(30000, 2);
+  const NeighbourGraph g = build_voxel_graph(pts, cfg);
+  const auto k = static_cast<std::size_t>(cfg.normal_neighbours);
+  ASSERT_GT(g.size(), k);
+  std::vector<std::pair<double, std::uint32_t>> ranked;
+  for (std::uint32_t n = 0; n < g.size(); n += 13) {
+    ranked.clear();
+    for (std::uint32_t m = 0; m < g.size(); ++m) ranked.emplace_back((g.nodes[m] - g.nodes[n]).squaredNorm(), m);
+    std::partial_sort(ranked.begin(), ranked.begin() + static_cast<std::ptrdiff_t>(k), ranked.end());
+    std::vector<std::uint32_t> nearest;
+    for (std::size_t j = 0; j < k; ++j) nearest.push_back(ranked[j].second);
+    const geometry::Pca pca = geometry::compute_pca(g.nodes, nearest);
+    // Same neighbours, so the same surface variation up to rounding (a neighbour more or less
+    // near an edge moves it by far more), and the same normal where it is well defined (sign
+    // aside: no viewpoint orients it).
+    EXPECT_NEAR(g.curvature[n], pca.surface_variation(), 1e-7) << "node " << n;
+    const Eigen::Vector3d l = pca.eigenvalues;
+    if (l(1) - l(0) > 1e-3 * l(2)) {
+      EXPECT_GT(std::abs(pca.eigenvectors.col(0).dot(g.normals[n])), 1.0 - 1e-6) << "node " << n;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cloudshape::segment

@@ -1,0 +1,36 @@
+// cloudshape-inject's replay of an MCAP recording: its PointCloud2 messages, decoded as the
+// ROS 2 input decodes them, handed over one by one at their recorded times.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <set>
+#include <string>
+
+#include "delivery.hpp"
+#include "io/read_error.hpp"
+
+namespace cloudshape::inject {
+
+struct ReplaySettings {
+  std::set<std::string> topics;  // empty: every PointCloud2 channel
+  bool recorded_timing = true;   // false: as fast as `send` returns (the caller paces)
+};
+
+struct ReplayStats {
+  std::size_t clouds = 0;
+  double max_late_s = 0;  // the most a cloud went out after its recorded time
+};
+
+// `send` gets each cloud with its message index and returns false to stop the replay.
+// A message that does not decode goes to `on_bad`, and the replay goes on. Throws io::ReadError
+// for a damaged recording, after every cloud before the damage was sent.
+ReplayStats replay_recording(const std::string& path, const ReplaySettings& settings, const std::atomic<bool>& stop,
+                             const std::function<bool(FileCloud&&, std::size_t index)>& send,
+                             const std::function<void(const io::ReadError&)>& on_bad);
+
+// Message `index` of the recording again, to send it a second time; throws like read_file_cloud.
+FileCloud read_recorded_cloud(const std::string& path, std::size_t index);
+
+}  // namespace cloudshape::inject
