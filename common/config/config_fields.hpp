@@ -133,6 +133,7 @@ void visit_fields(Ros2Config& c, F&& f) {
   f("markers_topic", c.markers_topic);
   f("file_frame_id", c.file_frame_id);
   f("marker_alpha", c.marker_alpha);
+  f("extent_line_width", c.extent_line_width);
   f("label_height", c.label_height);
   f("label_fallback_height", c.label_fallback_height);
   f("circle_segments", c.circle_segments);

@@ -17,9 +17,10 @@ struct Ros2Config {
   // stamped with their injection time in this frame: RViz drops markers with no frame.
   std::string file_frame_id = "cloudshape";
   double marker_alpha = 0.6;          // opacity of the solid markers: the cloud stays visible through them
+  double extent_line_width = 0.01;    // lines of an unknown object's extent, as a share of its largest size
   double label_height = 0.15;         // label text height, as a share of the object's largest size
   double label_fallback_height = 0.1; // ... of an object without a size (unknown, an error), in the cloud's unit
-  std::int64_t circle_segments = 32;  // segments of a cone's circles in its TRIANGLE_LIST
+  std::int64_t circle_segments = 32;  // segments of the circles of a cone's or frustum's TRIANGLE_LIST
 };
 
 }  // namespace cloudshape::config

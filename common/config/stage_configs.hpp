@@ -11,7 +11,7 @@ namespace cloudshape::config {
 // cloudshape-inject) and ingest refuse bigger input with an error naming the limit.
 struct InputConfig {
   std::int64_t max_points = 5'000'000;      // points of one cloud, counting non-finite ones
-  std::int64_t max_bytes = 1'000'000'000;   // bytes of one file, or of one raw cloud's coordinates (24 per point)
+  std::int64_t max_bytes = 1'000'000'000;   // bytes of one file, of one raw cloud's coordinates (24 per point) or of a PointCloud2's data
   // Larger coordinates are no measurement in any unit, and sums of their squares or centroids
   // of them overflow to infinity (found by fuzzing): such a cloud is refused.
   double max_coordinate = 1e30;

@@ -25,7 +25,8 @@ vision_msgs::msg::Detection3D to_detection(const pipeline::ObjectResult& object,
   hypothesis.pose().pose(to_pose(pose));
   out.results().push_back(std::move(hypothesis));
   const std::optional<SolidView> view = solid_view(object, kBoxSegments);
-  const OrientedBox box = view ? view->box : OrientedBox{pose, Eigen::Vector3d::Zero()};
+  const std::optional<OrientedBox> extent = extent_box(object);
+  const OrientedBox box = view ? view->box : extent ? *extent : OrientedBox{pose, Eigen::Vector3d::Zero()};
   out.bbox().center(to_pose(box.frame));
   out.bbox().size(to_vector3(box.size));
   return out;

@@ -100,9 +100,35 @@ std::optional<SolidView> pentagonal_prism_view(const pipeline::ObjectResult& o, 
   return triangles_view(f, detail::prism(pentagon, h));
 }
 
-// A regular tetrahedron of the mean edge: pose.axes[0] points from the centroid to vertex 0,
-// axes[1] to vertex 1 (across axis 0).
+// A truncated cone from its larger base (pose.center) along axis 0 to its smaller end.
+std::optional<SolidView> frustum_view(const pipeline::ObjectResult& o, const Frame& f, int segments) {
+  const double r = dimension(o, "radius"), top = dimension(o, "top_radius"), h = dimension(o, "height");
+  if (!positive(r) || !positive(top) || !positive(h)) return std::nullopt;
+  return triangles_view(f, detail::revolved(r, top, h, segments));
+}
+
+// A right prism of the object's polygon (u along axis 1, v along axis 2, about pose.center),
+// extruded along axis 0.
+std::optional<SolidView> prism_view(const pipeline::ObjectResult& o, const Frame& f, int) {
+  const double h = dimension(o, "height");
+  if (!positive(h) || o.polygon.size() < 3) return std::nullopt;
+  for (const Eigen::Vector2d& v : o.polygon) {
+    if (!v.allFinite()) return std::nullopt;
+  }
+  return triangles_view(f, detail::prism(o.polygon, h));
+}
+
+// The tetrahedron's own four corners when it has them; else the regular one of its mean edge:
+// pose.axes[0] points from the centroid to vertex 0, axes[1] to vertex 1 (across axis 0).
 std::optional<SolidView> tetrahedron_view(const pipeline::ObjectResult& o, const Frame& f, int) {
+  if (o.vertices.size() == 4) {
+    std::array<Vec3, 4> local;
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (!o.vertices[k].allFinite()) return std::nullopt;
+      local[k] = f.rotation.transpose() * (o.vertices[k] - f.origin);
+    }
+    return triangles_view(f, detail::tetrahedron(local));
+  }
   const double edge = dimension(o, "edge");
   if (!positive(edge)) return std::nullopt;
   const double r = edge * std::sqrt(6.0) / 4.0;       // centroid to vertex
@@ -118,9 +144,14 @@ std::optional<SolidView> tetrahedron_view(const pipeline::ObjectResult& o, const
 
 const std::map<std::string, ViewFn>& views() {
   static const std::map<std::string, ViewFn> all = {
-      {"box", box_view},   {"sphere", sphere_view},
-      {"cylinder", cylinder_view}, {"cone", cone_view},
-      {"pentagonal_prism", pentagonal_prism_view}, {"tetrahedron", tetrahedron_view}};
+      {"box", box_view},
+      {"sphere", sphere_view},
+      {"cylinder", cylinder_view},
+      {"cone", cone_view},
+      {"frustum", frustum_view},
+      {"pentagonal_prism", pentagonal_prism_view},
+      {"prism", prism_view},
+      {"tetrahedron", tetrahedron_view}};
   return all;
 }
 
@@ -137,6 +168,16 @@ double dimension(const pipeline::ObjectResult& object, const char* name) {
     if (n == name) return v;
   }
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+std::optional<OrientedBox> extent_box(const pipeline::ObjectResult& object) {
+  const pipeline::Extent& e = object.extent;
+  if (!e.center.allFinite() || !e.axes.allFinite() || !e.size.allFinite() || !(e.size.maxCoeff() > 0.0)) {
+    return std::nullopt;
+  }
+  Mat3 r = e.axes.transpose();
+  if (r.determinant() < 0.0) r.col(2) = -r.col(2);
+  return OrientedBox{Frame{e.center, r}, e.size};
 }
 
 std::optional<SolidView> solid_view(const pipeline::ObjectResult& object, int circle_segments) {

@@ -41,7 +41,11 @@ Eigen::Matrix3d object_rotation(const pipeline::ObjectResult& object);
 double dimension(const pipeline::ObjectResult& object, const char* name);
 
 // The view of a solid, nullopt for an unknown object, a shape without a view or dimensions that
-// are missing or not positive. `circle_segments` (>= 3) approximates a cone's circles.
+// are missing or not positive. `circle_segments` (>= 3) approximates the circles of cones and
+// frusta; a prism is its polygon extruded, a tetrahedron its own vertices when it has them.
 std::optional<SolidView> solid_view(const pipeline::ObjectResult& object, int circle_segments);
+
+// The object's extent (the oriented box of its own points), nullopt when it has none (size 0).
+std::optional<OrientedBox> extent_box(const pipeline::ObjectResult& object);
 
 }  // namespace cloudshape::ros2

@@ -85,6 +85,20 @@ TEST(Ros2Detections, ErrorResultIsOneUnknownOfNoSize) {
   expect_header(a.detections()[0].header());
 }
 
+TEST(Ros2Detections, UnknownObjectsBoxIsItsExtent) {
+  pipeline::RecognitionResult r;
+  pipeline::ObjectResult unknown;
+  unknown.extent.center = Eigen::Vector3d(-1, 0.5, 2);
+  unknown.extent.axes = test::test_rotation().transpose();
+  unknown.extent.size = Eigen::Vector3d(0.3, 0.2, 0.1);
+  r.objects.push_back(unknown);
+  const auto& d = to_detection_array(r, kHeader).detections()[0];
+  EXPECT_NEAR(d.bbox().size().x(), 0.3, 1e-15);
+  EXPECT_NEAR(d.bbox().size().z(), 0.1, 1e-15);
+  EXPECT_LT((position_of(d.bbox().center().position()) - unknown.extent.center).norm(), kTol);
+  EXPECT_LT((rotation_of(d.bbox().center().orientation()) - test::test_rotation()).norm(), 1e-9);
+}
+
 TEST(Ros2Detections, CloudWithoutObjectsIsAnEmptyArray) {
   pipeline::RecognitionResult r;
   const vision_msgs::msg::Detection3DArray a = to_detection_array(r, kHeader);

@@ -82,6 +82,47 @@ TEST(Ros2Markers, CylinderMarkerZIsTheSymmetryAxis) {
   EXPECT_LT((m.col(2) - r.objects[0].axes.row(0).transpose()).norm(), 1e-9);
 }
 
+TEST(Ros2Markers, UnknownObjectIsItsExtentsEdgesAndItsLabel) {
+  pipeline::RecognitionResult r;
+  pipeline::ObjectResult unknown;
+  unknown.reason = "no solid explains the points";
+  unknown.extent.center = Eigen::Vector3d(1, 2, 3);
+  unknown.extent.size = Eigen::Vector3d(4, 2, 1);
+  r.objects = {unknown};
+  config::Ros2Config style;
+  const auto a = to_marker_array(r, kHeader, style);
+  ASSERT_EQ(a.markers().size(), 3u);
+  const auto& edges = a.markers()[1];
+  EXPECT_EQ(edges.type(), mc::LINE_LIST);
+  ASSERT_EQ(edges.points().size(), 24u);
+  EXPECT_NEAR(edges.scale().x(), style.extent_line_width * 4.0, 1e-12);
+  for (const auto& p : edges.points()) {  // every end on a corner of the 4 x 2 x 1 box
+    EXPECT_NEAR(std::abs(p.x()), 2.0, 1e-12);
+    EXPECT_NEAR(std::abs(p.y()), 1.0, 1e-12);
+    EXPECT_NEAR(std::abs(p.z()), 0.5, 1e-12);
+  }
+  EXPECT_DOUBLE_EQ(edges.pose().position().x(), 1.0);
+  const auto& label = a.markers()[2];
+  EXPECT_EQ(label.text(), "unknown: no solid explains the points");
+  EXPECT_DOUBLE_EQ(label.pose().position().z(), 3.0);
+  EXPECT_NEAR(label.scale().z(), style.label_height * 4.0, 1e-12);
+}
+
+TEST(Ros2Markers, NewShapesAreTriangleLists) {
+  pipeline::RecognitionResult r;
+  r.objects = {test::object("frustum", {{"radius", 2}, {"top_radius", 1}, {"height", 3}}),
+               test::object("prism", {{"height", 2}, {"sides", 3}})};
+  r.objects[1].polygon = {{0, 0}, {1, 0}, {0, 1}};
+  config::Ros2Config style;
+  style.circle_segments = 8;
+  const auto a = to_marker_array(r, kHeader, style);
+  ASSERT_EQ(a.markers().size(), 1u + 2 * 2);
+  EXPECT_EQ(a.markers()[1].type(), mc::TRIANGLE_LIST);
+  EXPECT_EQ(a.markers()[1].points().size(), 3u * 4 * 8);  // base, two per side, top
+  EXPECT_EQ(a.markers()[3].type(), mc::TRIANGLE_LIST);
+  EXPECT_EQ(a.markers()[3].points().size(), 3u * (2 + 2 * 3));
+}
+
 TEST(Ros2Markers, CloudWithoutObjectsOnlyClears) {
   const auto a = to_marker_array(pipeline::RecognitionResult{}, kHeader, {});
   ASSERT_EQ(a.markers().size(), 1u);

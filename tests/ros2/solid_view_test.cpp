@@ -181,6 +181,63 @@ TEST(Ros2SolidView, TetrahedronIsRegularWithVertexZeroOnAxisZero) {
   EXPECT_TRUE(std::any_of(mesh.begin(), mesh.end(), [&](const Eigen::Vector3d& v) { return (v - apex).norm() < 1e-9; }));
 }
 
+TEST(Ros2SolidView, FrustumRunsFromItsLargerEndToItsSmaller) {
+  const pipeline::ObjectResult o = test::object("frustum", {{"radius", 3}, {"top_radius", 1}, {"height", 5}});
+  const auto view = solid_view(o, 40);
+  ASSERT_TRUE(view);
+  EXPECT_EQ(view->primitive, Primitive::triangles);
+  const Eigen::Vector3d axis = o.axes.row(0).transpose();
+  expect_near(view->box.frame.origin, o.center + 2.5 * axis, 1e-9);
+  expect_near(view->box.size, {5, 6, 6}, 1e-9);
+  const double k = 0.5 * 40 * std::sin(2 * kPi / 40);  // 40-gon area per squared radius
+  EXPECT_NEAR(signed_volume(view->triangles), 5.0 / 3.0 * k * (9.0 + 3.0 + 1.0), 1e-9);
+  for (const Eigen::Vector3d& v : in_cloud_frame(*view)) {
+    const double t = (v - o.center).dot(axis);
+    const double r = ((v - o.center) - t * axis).norm();
+    EXPECT_TRUE(std::abs(t) < 1e-9 || std::abs(t - 5.0) < 1e-9) << v.transpose();
+    EXPECT_TRUE(r < 1e-9 || std::abs(r - (t < 2.5 ? 3.0 : 1.0)) < 1e-9) << v.transpose();
+  }
+}
+
+TEST(Ros2SolidView, PrismIsItsPolygonExtruded) {
+  pipeline::ObjectResult o = test::object("prism", {{"height", 4}, {"sides", 6}});
+  o.polygon = {{-1, -1}, {1, -1}, {1, 0}, {0, 0}, {0, 1}, {-1, 1}};  // an L of area 3
+  const auto view = solid_view(o, 32);
+  ASSERT_TRUE(view);
+  EXPECT_NEAR(signed_volume(view->triangles), 12.0, 1e-12);
+  expect_near(view->box.size, {4, 2, 2});
+  expect_near(view->box.frame.origin, o.center);
+  o.polygon.resize(2);
+  EXPECT_FALSE(solid_view(o, 32));
+}
+
+TEST(Ros2SolidView, TetrahedronWithItsOwnVertices) {
+  pipeline::ObjectResult o = test::object("tetrahedron", {{"edge", 5}});
+  o.vertices = {Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(4, 1, 1), Eigen::Vector3d(1, 3, 1), Eigen::Vector3d(1, 1, 7)};
+  o.center = Eigen::Vector3d(1.75, 1.5, 2.5);
+  const auto view = solid_view(o, 32);
+  ASSERT_TRUE(view);
+  EXPECT_NEAR(signed_volume(view->triangles), 3.0 * 2.0 * 6.0 / 6.0, 1e-9);
+  for (const Eigen::Vector3d& v : in_cloud_frame(*view)) {
+    EXPECT_TRUE(std::any_of(o.vertices.begin(), o.vertices.end(),
+                            [&](const Eigen::Vector3d& c) { return (c - v).norm() < 1e-9; }))
+        << v.transpose();
+  }
+}
+
+TEST(Ros2SolidView, ExtentIsTheBoxOfAnObjectWithoutASolid) {
+  pipeline::ObjectResult o = test::object("unknown", {});
+  EXPECT_FALSE(extent_box(o));  // an error result has none
+  o.extent.center = Eigen::Vector3d(1, 2, 3);
+  o.extent.axes = test::test_rotation().transpose();
+  o.extent.size = Eigen::Vector3d(3, 2, 1);
+  const auto box = extent_box(o);
+  ASSERT_TRUE(box);
+  expect_near(box->frame.origin, o.extent.center);
+  expect_near(box->size, o.extent.size);
+  EXPECT_LT((box->frame.rotation - test::test_rotation()).norm(), kTol);
+}
+
 TEST(Ros2SolidView, UnknownMissingOrBadDimensionsHaveNoView) {
   EXPECT_FALSE(solid_view(test::object("unknown", {}), 32));
   EXPECT_FALSE(solid_view(test::object("box", {{"length", 3}, {"width", 2}}), 32));

@@ -67,16 +67,19 @@ function checkDetections(msg, result, where) {
   });
 }
 
-// markers[0] clears the namespace; then per object its solid (none for an unknown object) and
-// its text label.
+// markers[0] clears the namespace; then per object its solid (for an unknown object the
+// LINE_LIST of its extent's edges, none when it has no extent) and its text label.
 function checkMarkers(msg, result, header, where) {
   const m = msg.markers;
   if (m[0].action !== 3) fail(`${where}: the first marker is not a DELETEALL`);
   let next = 1;
   result.objects.forEach((object, i) => {
     const w = `${where} object ${i}`;
-    const solid = object.shape === "unknown" ? undefined : m[next++];
+    const unknown = object.shape === "unknown";
+    const extent = object.extent && Math.max(...object.extent.size) > 0;
+    const solid = unknown && !extent ? undefined : m[next++];
     const label = m[next++] || fail(`${w}: no label marker`);
+    if (solid && unknown && solid.type !== 5) fail(`${w}: marker type ${solid.type} for an unknown object's extent`);
     if (solid) {
       if (solid.ns !== result.source) fail(`${w}: namespace ${solid.ns}, source ${result.source}`);
       if (MARKER_TYPE[object.shape] !== undefined && solid.type !== MARKER_TYPE[object.shape]) {
