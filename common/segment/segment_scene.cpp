@@ -41,7 +41,7 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
                          : build_voxel_graph(points, cfg, pool);
   if (g.size() == 0) return out;
   std::vector<char> removed(g.size(), 0);
-  out.structure = remove_structure(g, cfg, removed);
+  out.structure = remove_structure(g, cfg, removed, pool);
   if (!g.viewpoint) orient_normals_outward(g, removed);
   const std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
 
