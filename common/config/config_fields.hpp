@@ -14,6 +14,11 @@ void visit_fields(InputConfig& c, F&& f) {
 }
 
 template <class F>
+void visit_fields(ExecutionConfig& c, F&& f) {
+  f("threads", c.threads);
+}
+
+template <class F>
 void visit_fields(PreprocessConfig& c, F&& f) {
   f("voxel_divisions", c.voxel_divisions);
   f("max_points", c.max_points);
@@ -143,6 +148,7 @@ void visit_fields(Ros2Config& c, F&& f) {
 template <class F>
 void visit_sections(PipelineConfig& c, F&& f) {
   f("input", c.input);
+  f("execution", c.execution);
   f("preprocess", c.preprocess);
   f("segment", c.segment);
   f("planes", c.planes);

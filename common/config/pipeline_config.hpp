@@ -12,6 +12,7 @@ namespace cloudshape::config {
 
 struct PipelineConfig {
   InputConfig input;
+  ExecutionConfig execution;
   PreprocessConfig preprocess;
   SegmentConfig segment;
   PlanesConfig planes;

@@ -17,6 +17,11 @@ struct InputConfig {
   double max_coordinate = 1e30;
 };
 
+// How the recognition runs, not what it finds: the answers are the same for any value.
+struct ExecutionConfig {
+  std::int64_t threads = 0;  // threads of the recognition, the caller's included; 0 = one per core
+};
+
 struct PreprocessConfig {
   double voxel_divisions = 200.0;       // voxel edge = bounding-box diagonal / this
   std::int64_t max_points = 12000;      // the voxel grows until at most this many remain

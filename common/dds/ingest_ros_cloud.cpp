@@ -59,8 +59,8 @@ RawCloudPoints pointcloud2_points(const io::PointCloud2& cloud, const config::In
 }
 
 std::vector<msg::FilteredCloud> ingest_pointcloud2(const msg::CloudHeader& header, const io::PointCloud2& cloud,
-                                                   const config::PipelineConfig& cfg) {
-  return filtered_clouds(header, pointcloud2_points(cloud, cfg.input), cfg);
+                                                   const config::PipelineConfig& cfg, parallel::ThreadPool* pool) {
+  return filtered_clouds(header, pointcloud2_points(cloud, cfg.input), cfg, pool);
 }
 
 }  // namespace cloudshape::dds

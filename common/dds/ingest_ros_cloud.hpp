@@ -31,6 +31,7 @@ RawCloudPoints pointcloud2_points(const io::PointCloud2& cloud, const config::In
 
 // pointcloud2_points, then filtered_clouds with `header`.
 std::vector<msg::FilteredCloud> ingest_pointcloud2(const msg::CloudHeader& header, const io::PointCloud2& cloud,
-                                                   const config::PipelineConfig& cfg);
+                                                   const config::PipelineConfig& cfg,
+                                                   parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::dds

@@ -66,14 +66,15 @@ void check_usable_points(const RawCloudPoints& cloud, std::size_t count, const c
   }
 }
 
-std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg) {
-  return filtered_clouds(in.header(), raw_cloud_points(in, cfg.input), cfg);
+std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg,
+                                                 parallel::ThreadPool* pool) {
+  return filtered_clouds(in.header(), raw_cloud_points(in, cfg.input), cfg, pool);
 }
 
 std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, const RawCloudPoints& raw,
-                                                const config::PipelineConfig& cfg) {
+                                                const config::PipelineConfig& cfg, parallel::ThreadPool* pool) {
   const auto start = std::chrono::steady_clock::now();
-  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, raw.grid, cfg.preprocess, cfg.segment);
+  const pipeline::ObjectClouds clouds = pipeline::object_clouds(raw.points, raw.grid, cfg.preprocess, cfg.segment, pool);
   const std::vector<pipeline::ObjectCloud>& objects = clouds.objects;
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   std::vector<msg::FilteredCloud> out;

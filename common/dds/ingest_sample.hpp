@@ -9,6 +9,7 @@
 #include "config/pipeline_config.hpp"
 #include "dds/raw_cloud_error.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::dds {
 
@@ -29,11 +30,13 @@ void check_usable_points(const RawCloudPoints& cloud, std::size_t count, const c
 
 // One filtered cloud per object of `cloud`, each with `header` and object_index/object_count set
 // (one with object_count 0 when preprocessing finds no object), as recognize_cloud splits it.
+// A `pool` runs the segmentation's searches and the objects' preprocessing: the same clouds.
 std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, const RawCloudPoints& cloud,
-                                                const config::PipelineConfig& cfg);
+                                                const config::PipelineConfig& cfg, parallel::ThreadPool* pool = nullptr);
 
 // raw_cloud_points, then filtered_clouds. Throws RawCloudError as raw_cloud_points does.
-std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg);
+std::vector<msg::FilteredCloud> ingest_raw_cloud(const msg::RawCloud& in, const config::PipelineConfig& cfg,
+                                                 parallel::ThreadPool* pool = nullptr);
 
 // The one message a refused cloud becomes: `header` marked failed by `stage` with `text`, as the
 // cloud's single object (a raw cloud's own object fields mean nothing).

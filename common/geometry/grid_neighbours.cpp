@@ -215,7 +215,8 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
   return out;
 }
 
-void all_nearest_neighbours(const PointList& points, std::size_t k, double cell, std::vector<std::uint32_t>& out) {
+void all_nearest_neighbours(const PointList& points, std::size_t k, double cell, std::vector<std::uint32_t>& out,
+                            parallel::ThreadPool* pool) {
   const std::size_t n = points.size();
   k = std::min(k, n);
   out.assign(n * k, 0);
@@ -226,90 +227,100 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
     hard.resize(n);
     for (std::size_t i = 0; i < n; ++i) hard[i] = static_cast<std::uint32_t>(i);
   } else {
-    // One candidate list per cell (its 27-cell block), shared by every point of the cell, its
-    // coordinates apart so that the distances to all of them vectorise.
-    std::vector<std::uint8_t> cell_done(grid.cells(), 0);
-    std::vector<std::uint32_t> candidates;
-    std::vector<double> cx, cy, cz, dist;
-    std::vector<std::uint32_t> near;
-    std::vector<double> best_d(k);
-    std::vector<std::uint32_t> best_i(k);
-    for (std::size_t first = 0; first < n; ++first) {
-      const std::uint32_t s = grid.cell_of(first);
-      if (cell_done[s]) continue;
-      cell_done[s] = 1;
-      candidates.clear();
-      const auto c = grid.coords(points[first]);
-      for (std::int64_t ring = 0; ring <= 1; ++ring) {
-        grid.for_ring(c, ring, [&](std::uint32_t j) { candidates.push_back(j); });
-      }
-      const std::size_t m = candidates.size();
-      cx.resize(m);
-      cy.resize(m);
-      cz.resize(m);
-      dist.resize(m);
-      near.resize(m);
-      for (std::size_t j = 0; j < m; ++j) {
-        cx[j] = points[candidates[j]].x();
-        cy[j] = points[candidates[j]].y();
-        cz[j] = points[candidates[j]].z();
-      }
-      for (const std::uint32_t* it = grid.members_begin(s); it != grid.members_end(s); ++it) {
-        const std::uint32_t i = *it;
-        const double qx = points[i].x(), qy = points[i].y(), qz = points[i].z();
-        // squared_distance's sum, term by term. Only points within the block's reach can be
-        // among the k nearest, unless fewer than k are: then the kd-tree answers.
-        const double reach = grid.reach(points[i], 1);
-        const double limit = reach * reach;
-        std::size_t within = 0;
+    // Blocks of cells, each writing only its own points' rows; the points the grid cannot answer
+    // are listed per block and joined in block order.
+    constexpr std::size_t kCellsPerBlock = 64;
+    const std::size_t cells = grid.cells();
+    std::vector<std::vector<std::uint32_t>> hard_of_block((cells + kCellsPerBlock - 1) / kCellsPerBlock);
+    parallel::for_blocks(pool, cells, kCellsPerBlock, [&](std::size_t cell_begin, std::size_t cell_end) {
+      std::vector<std::uint32_t>& block_hard = hard_of_block[cell_begin / kCellsPerBlock];
+      // One candidate list per cell (its 27-cell block), shared by every point of the cell, its
+      // coordinates apart so that the distances to all of them vectorise.
+      std::vector<std::uint32_t> candidates;
+      std::vector<double> cx, cy, cz, dist;
+      std::vector<std::uint32_t> near;
+      std::vector<double> best_d(k);
+      std::vector<std::uint32_t> best_i(k);
+      for (std::size_t s = cell_begin; s < cell_end; ++s) {
+        const std::uint32_t* first = grid.members_begin(static_cast<std::uint32_t>(s));
+        candidates.clear();
+        const auto c = grid.coords(points[*first]);
+        for (std::int64_t ring = 0; ring <= 1; ++ring) {
+          grid.for_ring(c, ring, [&](std::uint32_t j) { candidates.push_back(j); });
+        }
+        const std::size_t m = candidates.size();
+        cx.resize(m);
+        cy.resize(m);
+        cz.resize(m);
+        dist.resize(m);
+        near.resize(m);
         for (std::size_t j = 0; j < m; ++j) {
-          const double dx = qx - cx[j], dy = qy - cy[j], dz = qz - cz[j];
-          double d = dx * dx;
-          d += dy * dy;
-          d += dz * dz;
-          dist[within] = d;
-          near[within] = candidates[j];
-          within += d <= limit ? 1 : 0;
+          cx[j] = points[candidates[j]].x();
+          cy[j] = points[candidates[j]].y();
+          cz[j] = points[candidates[j]].z();
         }
-        if (within < k) {
-          hard.push_back(i);
-          continue;
-        }
-        std::size_t count = 0;
-        for (std::size_t j = 0; j < within; ++j) {
-          const double d = dist[j];
-          const std::uint32_t id = near[j];
-          if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) continue;
-          std::size_t at = count < k ? count++ : k - 1;
-          while (at > 0 && closer(d, id, best_d[at - 1], best_i[at - 1])) {
-            best_d[at] = best_d[at - 1];
-            best_i[at] = best_i[at - 1];
-            --at;
+        for (const std::uint32_t* it = first; it != grid.members_end(static_cast<std::uint32_t>(s)); ++it) {
+          const std::uint32_t i = *it;
+          const double qx = points[i].x(), qy = points[i].y(), qz = points[i].z();
+          // squared_distance's sum, term by term. Only points within the block's reach can be
+          // among the k nearest, unless fewer than k are: then the kd-tree answers.
+          const double reach = grid.reach(points[i], 1);
+          const double limit = reach * reach;
+          std::size_t within = 0;
+          for (std::size_t j = 0; j < m; ++j) {
+            const double dx = qx - cx[j], dy = qy - cy[j], dz = qz - cz[j];
+            double d = dx * dx;
+            d += dy * dy;
+            d += dz * dz;
+            dist[within] = d;
+            near[within] = candidates[j];
+            within += d <= limit ? 1 : 0;
           }
-          best_d[at] = d;
-          best_i[at] = id;
+          if (within < k) {
+            block_hard.push_back(i);
+            continue;
+          }
+          std::size_t count = 0;
+          for (std::size_t j = 0; j < within; ++j) {
+            const double d = dist[j];
+            const std::uint32_t id = near[j];
+            if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) continue;
+            std::size_t at = count < k ? count++ : k - 1;
+            while (at > 0 && closer(d, id, best_d[at - 1], best_i[at - 1])) {
+              best_d[at] = best_d[at - 1];
+              best_i[at] = best_i[at - 1];
+              --at;
+            }
+            best_d[at] = d;
+            best_i[at] = id;
+          }
+          std::copy(best_i.begin(), best_i.end(), out.begin() + static_cast<std::ptrdiff_t>(i * k));
         }
-        std::copy(best_i.begin(), best_i.end(), out.begin() + static_cast<std::ptrdiff_t>(i * k));
       }
-    }
+    });
+    for (const auto& block_hard : hard_of_block) hard.insert(hard.end(), block_hard.begin(), block_hard.end());
   }
   if (hard.empty()) return;
   // Sparse spots (a line of points, an outlier): the k-th neighbour lies beyond the block.
   const KdTree tree(points);
-  std::vector<std::uint32_t> idx;
-  std::vector<double> d2;
-  std::vector<std::pair<double, std::uint32_t>> ranked;
-  for (std::uint32_t i : hard) {
-    // Every point as near as the k-th, so that a tie at the k-th goes by index too.
-    tree.knn(points[i], k, idx, &d2);
+  parallel::for_blocks(pool, hard.size(), 256, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint32_t> idx;
+    std::vector<double> d2;
     std::vector<std::uint32_t> tied;
-    tree.radius(points[i], std::max(std::sqrt(d2.back()) * (1.0 + 1e-9), 1e-150), tied);
-    if (tied.size() >= k) idx.swap(tied);
-    ranked.clear();
-    for (std::uint32_t j : idx) ranked.emplace_back(squared_distance(points[i], points[j]), j);
-    std::sort(ranked.begin(), ranked.end());
-    for (std::size_t j = 0; j < k; ++j) out[i * k + j] = ranked[j].second;
-  }
+    std::vector<std::pair<double, std::uint32_t>> ranked;
+    for (std::size_t h = begin; h < end; ++h) {
+      const std::uint32_t i = hard[h];
+      // Every point as near as the k-th, so that a tie at the k-th goes by index too.
+      tree.knn(points[i], k, idx, &d2);
+      tied.clear();
+      tree.radius(points[i], std::max(std::sqrt(d2.back()) * (1.0 + 1e-9), 1e-150), tied);
+      if (tied.size() >= k) idx.swap(tied);
+      ranked.clear();
+      for (std::uint32_t j : idx) ranked.emplace_back(squared_distance(points[i], points[j]), j);
+      std::sort(ranked.begin(), ranked.end());
+      for (std::size_t j = 0; j < k; ++j) out[i * k + j] = ranked[j].second;
+    }
+  });
 }
 
 }  // namespace cloudshape::geometry

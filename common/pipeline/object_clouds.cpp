@@ -7,18 +7,23 @@
 namespace cloudshape::pipeline {
 
 ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& pre,
-                           const config::SegmentConfig& seg) {
+                           const config::SegmentConfig& seg, parallel::ThreadPool* pool) {
   ObjectClouds out;
-  segment::SceneSegmentation scene = segment::segment_scene(raw, grid, seg);
+  segment::SceneSegmentation scene = segment::segment_scene(raw, grid, seg, pool);
   if (scene.objects.empty() && !raw.empty()) {
     scene.objects.emplace_back(raw.size());
     std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);
   }
-  for (std::vector<std::uint32_t>& indices : scene.objects) {
+  // Each object preprocessed in its own slot; the slots joined in object order.
+  std::vector<PreprocessedCloud> done(scene.objects.size());
+  parallel::for_blocks(pool, scene.objects.size(), 1, [&](std::size_t begin, std::size_t) {
     PointList points;
-    points.reserve(indices.size());
-    for (std::uint32_t i : indices) points.push_back(raw[i]);
-    PreprocessedCloud p = preprocess_cloud(points, pre);
+    points.reserve(scene.objects[begin].size());
+    for (std::uint32_t i : scene.objects[begin]) points.push_back(raw[i]);
+    done[begin] = preprocess_cloud(points, pre);
+  });
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    PreprocessedCloud& p = done[k];
     if (p.points.empty()) continue;
     if (out.objects.empty()) {
       out.scene.resolution = p.resolution;
@@ -26,7 +31,7 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     }
     out.scene.outliers_removed += p.outliers_removed;
     out.scene.points.insert(out.scene.points.end(), p.points.begin(), p.points.end());
-    out.objects.push_back({std::move(p.points), p.resolution, std::move(indices)});
+    out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k])});
   }
   return out;
 }

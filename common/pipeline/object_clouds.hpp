@@ -7,6 +7,7 @@
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 #include "pipeline/preprocess.hpp"
 
 namespace cloudshape::pipeline {
@@ -28,8 +29,9 @@ struct ObjectClouds {
 
 // segment_scene, then preprocess_cloud per object. A cloud in which segmentation finds no
 // object at all (a lone plane, too few points) is preprocessed whole as one object, so that the
-// recognizer can still say what it is (e.g. unknown: all points coplanar).
+// recognizer can still say what it is (e.g. unknown: all points coplanar). A `pool` runs the
+// segmentation's neighbour searches and the objects' preprocessing in parallel, same result.
 ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& pre,
-                           const config::SegmentConfig& seg);
+                           const config::SegmentConfig& seg, parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::pipeline

@@ -27,35 +27,52 @@ class StageClock {
 }  // namespace
 
 RecognitionResult recognize_cloud(const PointList& points, const config::PipelineConfig& cfg,
-                                  const std::string& source) {
-  return recognize_cloud(points, GridLayout{}, cfg, source);
+                                  const std::string& source, parallel::ThreadPool* pool) {
+  return recognize_cloud(points, GridLayout{}, cfg, source, pool);
 }
 
 RecognitionResult recognize_cloud(const PointList& points, const GridLayout& grid,
-                                  const config::PipelineConfig& cfg, const std::string& source) {
+                                  const config::PipelineConfig& cfg, const std::string& source,
+                                  parallel::ThreadPool* pool) {
   RecognitionResult result;
   result.source = source;
   result.points_in = points.size();
+  StageClock wall;
   StageClock clock;
 
-  const ObjectClouds clouds = object_clouds(points, grid, cfg.preprocess, cfg.segment);
+  const ObjectClouds clouds = object_clouds(points, grid, cfg.preprocess, cfg.segment, pool);
   result.points_used = clouds.scene.points.size();
   result.resolution = clouds.scene.resolution;
   result.timings.preprocess_ms = clock.lap_ms();
 
-  for (const ObjectCloud& o : clouds.objects) {
+  // Objects are independent and every stage seeds its own RANSAC: each runs alone, its result
+  // in its own slot, and the slots are read in object order. A stage's time is summed over the
+  // objects (with several threads more than the wall clock it took).
+  std::vector<ObjectResult> objects(clouds.objects.size());
+  std::vector<StageTimings> times(clouds.objects.size());
+  parallel::for_blocks(pool, clouds.objects.size(), 1, [&](std::size_t begin, std::size_t) {
+    const ObjectCloud& o = clouds.objects[begin];
+    StageTimings& t = times[begin];
+    StageClock object_clock;
     const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes);
-    result.timings.planes_ms += clock.lap_ms();
+    t.planes_ms = object_clock.lap_ms();
     const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints);
-    result.timings.keypoints_ms += clock.lap_ms();
+    t.keypoints_ms = object_clock.lap_ms();
     const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
-    result.timings.classify_ms += clock.lap_ms();
-    result.objects.push_back(solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve));
-    result.objects.back().point_indices = o.raw_indices;
-    result.timings.solve_ms += clock.lap_ms();
+    t.classify_ms = object_clock.lap_ms();
+    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve);
+    objects[begin].point_indices = o.raw_indices;
+    t.solve_ms = object_clock.lap_ms();
+  });
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    result.objects.push_back(std::move(objects[i]));
+    result.timings.planes_ms += times[i].planes_ms;
+    result.timings.keypoints_ms += times[i].keypoints_ms;
+    result.timings.classify_ms += times[i].classify_ms;
+    result.timings.solve_ms += times[i].solve_ms;
   }
-  const StageTimings& t = result.timings;
-  result.timings.total_ms = t.preprocess_ms + t.planes_ms + t.keypoints_ms + t.classify_ms + t.solve_ms;
+  // The wall clock around the whole call: with one thread the stages' sum, with more less.
+  result.timings.total_ms = wall.lap_ms();
   return result;
 }
 

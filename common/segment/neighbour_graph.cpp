@@ -13,6 +13,8 @@ namespace {
 
 // A voxel key packs 21 bits per axis: an axis holds at most this many cells, with room to spare.
 constexpr double kMaxCellsPerAxis = 1 << 20;
+// Nodes per block of the parallel normal loops: a few thousand blocks' overhead at most.
+constexpr std::size_t kNodesPerBlock = 512;
 
 // Running first and second moments of a point set, for a normal without storing the points.
 struct Moments {
@@ -62,7 +64,7 @@ void fill_spacing(NeighbourGraph& g, double fallback) {
 }  // namespace
 
 NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& grid,
-                                     const config::SegmentConfig& cfg) {
+                                     const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
   NeighbourGraph g;
   g.viewpoint = Point::Zero();
   const std::size_t width = grid.width;
@@ -171,26 +173,29 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(stride);
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
-  for (std::uint32_t n = 0; n < g.size(); ++n) {
-    const std::ptrdiff_t px = static_cast<std::ptrdiff_t>(node_pixel[n] % width);
-    const std::ptrdiff_t py = static_cast<std::ptrdiff_t>(node_pixel[n] / width);
-    Moments m;
-    m.origin = g.nodes[n];
-    for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach);
-         y <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach); y += step) {
-      for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, px - reach);
-           x <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach); x += step) {
-        const std::int32_t i = image[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
-        if (i >= 0 && same_surface(range[n], point_range[i])) m.add(points[i]);
+  parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) {
+      const std::ptrdiff_t px = static_cast<std::ptrdiff_t>(node_pixel[n] % width);
+      const std::ptrdiff_t py = static_cast<std::ptrdiff_t>(node_pixel[n] / width);
+      Moments m;
+      m.origin = g.nodes[n];
+      for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach);
+           y <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach); y += step) {
+        for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, px - reach);
+             x <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach); x += step) {
+          const std::int32_t i = image[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
+          if (i >= 0 && same_surface(range[n], point_range[i])) m.add(points[i]);
+        }
       }
+      normal_of(m, g.normals[n], g.curvature[n]);
+      if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
     }
-    normal_of(m, g.normals[n], g.curvature[n]);
-    if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
-  }
+  });
   return g;
 }
 
-NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg) {
+NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
+                                 parallel::ThreadPool* pool) {
   NeighbourGraph g;
   g.node_of_point.assign(points.size(), kNoNode);
   if (points.empty()) {
@@ -276,15 +281,17 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
   // Nodes sit about a voxel apart on a surface: the k-th lies within sqrt(k / pi) voxels.
   std::vector<std::uint32_t> knn;
-  geometry::all_nearest_neighbours(g.nodes, k, 0.75 * std::sqrt(static_cast<double>(k)) * voxel, knn);
+  geometry::all_nearest_neighbours(g.nodes, k, 0.75 * std::sqrt(static_cast<double>(k)) * voxel, knn, pool);
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
-  for (std::uint32_t n = 0; n < g.size(); ++n) {
-    Moments m;
-    m.origin = g.nodes[n];
-    for (std::size_t j = 0; j < k; ++j) m.add(g.nodes[knn[n * k + j]]);
-    normal_of(m, g.normals[n], g.curvature[n]);
-  }
+  parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) {
+      Moments m;
+      m.origin = g.nodes[n];
+      for (std::size_t j = 0; j < k; ++j) m.add(g.nodes[knn[n * k + j]]);
+      normal_of(m, g.normals[n], g.curvature[n]);
+    }
+  });
   return g;
 }
 

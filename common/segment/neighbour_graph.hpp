@@ -9,6 +9,7 @@
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::segment {
 
@@ -37,11 +38,13 @@ struct NeighbourGraph {
 // cfg.depth_jump of the nearer range. Normals from the pixels in a window of cfg.normal_radius
 // cells on the same side of every depth jump.
 NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& grid,
-                                     const config::SegmentConfig& cfg);
+                                     const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
 
 // Any cloud: voxels whose edge is chosen so that about cfg.target_nodes are occupied; a
 // voxel's node is its centroid, 26-neighbour voxels are connected; normals from the
-// cfg.normal_neighbours nearest nodes, unoriented (no viewpoint).
-NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg);
+// cfg.normal_neighbours nearest nodes, unoriented (no viewpoint). A `pool` runs the neighbour
+// search and the normals in blocks of nodes: the same graph.
+NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
+                                 parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::segment

@@ -33,14 +33,15 @@ bool leftover_of_structure(const NeighbourGraph& g, const std::vector<std::uint3
 
 }  // namespace
 
-SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg) {
+SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                                parallel::ThreadPool* pool) {
   SceneSegmentation out;
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
-                         ? build_organized_graph(points, grid, cfg)
-                         : build_voxel_graph(points, cfg);
+                         ? build_organized_graph(points, grid, cfg, pool)
+                         : build_voxel_graph(points, cfg, pool);
   if (g.size() == 0) return out;
   std::vector<char> removed(g.size(), 0);
-  out.structure = remove_structure(g, cfg, removed);
+  out.structure = remove_structure(g, cfg, removed, pool);
   if (!g.viewpoint) orient_normals_outward(g, removed);
   const std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
 

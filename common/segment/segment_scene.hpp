@@ -7,6 +7,7 @@
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 #include "segment/structure_planes.hpp"
 
 namespace cloudshape::segment {
@@ -20,7 +21,9 @@ struct SceneSegmentation {
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
 // convex segments; segments under cfg.min_object_nodes nodes or cfg.min_object_share of the
 // nodes are clutter, narrow ones smaller than cfg.fragment_max_share of the largest are slivers,
-// and flat segments lying in a structure plane are leftovers of it.
-SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg);
+// and flat segments lying in a structure plane are leftovers of it. A `pool` builds the graph's
+// normals on its threads: the same segments.
+SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                                parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::segment

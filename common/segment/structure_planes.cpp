@@ -50,7 +50,8 @@ std::vector<std::uint32_t> largest_connected(const NeighbourGraph& g, const std:
 }
 
 PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& active,
-                    const std::vector<std::uint32_t>& seeds, const config::SegmentConfig& cfg, std::mt19937_64& rng) {
+                    const std::vector<std::uint32_t>& seeds, const config::SegmentConfig& cfg, std::mt19937_64& rng,
+                    parallel::ThreadPool* pool) {
   const double band = cfg.structure_band;
   const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
   std::vector<std::uint32_t> sample = active;
@@ -69,20 +70,32 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   scored.reserve(sample.size());
   for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
-  geometry::Plane best;
-  std::size_t best_score = 0;
-  for (std::int64_t h = 0; h < cfg.structure_hypotheses; ++h) {
+  // Every hypothesis' seed drawn first, in order from the one generator; then the scoring in
+  // blocks (any thread count), and the best taken in hypothesis order: the serial answer.
+  const std::size_t hypotheses = static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.structure_hypotheses));
+  std::vector<geometry::Plane> planes(hypotheses);
+  for (geometry::Plane& p : planes) {
     const std::uint32_t s = seeds[pick(rng)];
-    geometry::Plane p;
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
-    std::size_t score = 0;
-    for (const Scored& c : scored) {
-      score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
+  }
+  std::vector<std::size_t> scores(hypotheses, 0);
+  parallel::for_blocks(pool, hypotheses, 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t h = begin; h < end; ++h) {
+      const geometry::Plane& p = planes[h];
+      std::size_t score = 0;
+      for (const Scored& c : scored) {
+        score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
+      }
+      scores[h] = score;
     }
-    if (score > best_score) {
-      best_score = score;
-      best = p;
+  });
+  geometry::Plane best;
+  std::size_t best_score = 0;
+  for (std::size_t h = 0; h < hypotheses; ++h) {
+    if (scores[h] > best_score) {
+      best_score = scores[h];
+      best = planes[h];
     }
   }
   PlaneFit fit;
@@ -230,7 +243,7 @@ double median_spacing(const NeighbourGraph& g, std::vector<std::uint32_t> nodes)
 }  // namespace
 
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const config::SegmentConfig& cfg,
-                                             std::vector<char>& removed) {
+                                             std::vector<char>& removed, parallel::ThreadPool* pool) {
   std::vector<StructurePlane> found;
   std::mt19937_64 rng(static_cast<std::uint64_t>(cfg.seed));
   std::vector<char> tried(g.size(), 0);  // inliers of a plane that proved to be no structure
@@ -249,7 +262,7 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       if (g.curvature[n] < 0.02) seeds.push_back(n);
     }
     if (seeds.empty() || static_cast<double>(searched.size()) < min_nodes) break;
-    PlaneFit fit = best_plane(g, searched, seeds, cfg, rng);
+    PlaneFit fit = best_plane(g, searched, seeds, cfg, rng, pool);
     if (static_cast<double>(fit.inliers.size()) < min_nodes) break;
 
     std::vector<char> inlier(g.size(), 0);

@@ -24,8 +24,9 @@ struct StructurePlane {
 // followed down its own slope, meets the plane, in all four in-plane directions), and its area is
 // at least cfg.structure_reach times their footprint: a solid's own face has its solid behind it,
 // covers no more than the solid does, and meets the solid's other faces at its own edges (a
-// cone's side leans over its base, but meets it at the base's edge). Deterministic for cfg.seed.
+// cone's side leans over its base, but meets it at the base's edge). Deterministic for cfg.seed,
+// whatever `pool` scores the hypotheses.
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
-                                             std::vector<char>& removed);
+                                             std::vector<char>& removed, parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::segment

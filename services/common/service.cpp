@@ -34,6 +34,9 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
   app.add_option("--ros-topic", opt.ros_topics,
                  "also read sensor_msgs/PointCloud2 on this ROS 2 topic, e.g. /camera/depth/points "
                  "(ingest; repeatable; beside ros2.input_topics)");
+  app.add_option("--threads", opt.threads,
+                 "threads of the stage, this one included (default: execution.threads, 0 = one per core); "
+                 "the same results for any count");
   app.add_flag("-v,--verbose", verbose, "debug logging");
   try {
     app.parse(argc, argv);
@@ -63,10 +66,14 @@ config::PipelineConfig load_config(const Options& opt) {
   std::string path = opt.config_path.empty() ? config::default_pipeline_config_path() : opt.config_path;
   if (path.empty()) {
     spdlog::info("configuration: built-in defaults");
-    return {};
+    config::PipelineConfig cfg;
+    if (opt.threads) cfg.execution.threads = static_cast<std::int64_t>(*opt.threads);
+    return cfg;
   }
   spdlog::info("configuration: {}", path);
-  return config::load_pipeline_config(path);
+  config::PipelineConfig cfg = config::load_pipeline_config(path);
+  if (opt.threads) cfg.execution.threads = static_cast<std::int64_t>(*opt.threads);
+  return cfg;
 }
 
 const std::atomic<bool>& install_stop_flag() {

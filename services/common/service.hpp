@@ -33,6 +33,7 @@ struct Options {
   int subscribers = 1;         // downstream readers to wait for before reading input
   std::optional<std::size_t> max_points;  // --max-points: overrides input.max_points (ingest)
   std::vector<std::string> ros_topics;    // --ros-topic: PointCloud2 topics read too (ingest)
+  std::optional<std::size_t> threads;     // --threads: overrides execution.threads
 };
 
 // Parses the common flags; exits the process on --help or a bad command line (status 2).
@@ -41,7 +42,8 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
 // spdlog to stderr, one line per event, tagged with the service and lane.
 void set_up_logging(const Options& opt, bool verbose);
 
-// Loads --config or the default pipeline.yaml (built-in defaults when there is none).
+// Loads --config or the default pipeline.yaml (built-in defaults when there is none), with
+// --threads over its execution.threads.
 config::PipelineConfig load_config(const Options& opt);
 
 // SIGINT / SIGTERM raise the flag; the only global state of a service.

@@ -21,11 +21,14 @@ int main(int argc, char** argv) {
       spdlog::critical("{}", e.what());
       return 2;
     }
+    // Joined when main returns, after the service loop has stopped (SIGINT / SIGTERM).
+    cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
+    spdlog::info("recognition threads: {}", pool.size());
     cs::service::Extensions<cs::msg::FilteredCloud> ros;
-    ros.inputs = [&](cs::dds::Participant& p) { return cs::service::ros_cloud_inputs(p, opt, cfg); };
+    ros.inputs = [&](cs::dds::Participant& p) { return cs::service::ros_cloud_inputs(p, opt, cfg, &pool); };
     return cs::service::run(
         opt, cs::dds::topics::raw_cloud, cs::dds::topics::filtered_cloud,
-        [&](cs::msg::RawCloud& in) { return cs::dds::ingest_raw_cloud(in, cfg); },
+        [&](cs::msg::RawCloud& in) { return cs::dds::ingest_raw_cloud(in, cfg, &pool); },
         cs::dds::refused_raw_cloud,
         // A raw cloud's object_count means nothing (a sensor program may leave it 0): every
         // raw cloud is processed.

@@ -9,12 +9,13 @@
 namespace cloudshape::service {
 
 RosCloudInput::RosCloudInput(dds::Participant& participant, const std::string& ros_topic,
-                             const config::PipelineConfig& cfg)
+                             const config::PipelineConfig& cfg, parallel::ThreadPool* pool)
     : ros_topic_(ros_topic),
       dds_topic_(dds::ros2_dds_topic(ros_topic)),
       spec_{dds_topic_.c_str()},
       reader_(participant, spec_, dds::Traffic::ros2_sensor_data),
-      cfg_(cfg) {}
+      cfg_(cfg),
+      pool_(pool) {}
 
 std::optional<CloudRef> RosCloudInput::take() {
   eprosima::fastdds::dds::SampleInfo info;
@@ -35,7 +36,7 @@ std::vector<msg::FilteredCloud> RosCloudInput::process(bool& failed) {
   std::vector<msg::FilteredCloud> out;
   try {
     if (!sample_.undecodable.empty()) throw dds::RawCloudError(sample_.undecodable);
-    out = dds::ingest_pointcloud2(header_, cloud, cfg_);
+    out = dds::ingest_pointcloud2(header_, cloud, cfg_, pool_);
   } catch (const std::exception& e) {
     spdlog::error("cloud {} ({}): {}", header_.cloud_id(), ros_topic_, e.what());
     failed = true;
@@ -48,7 +49,7 @@ std::vector<msg::FilteredCloud> RosCloudInput::process(bool& failed) {
 }
 
 std::vector<std::unique_ptr<Input<msg::FilteredCloud>>> ros_cloud_inputs(
-    dds::Participant& participant, const Options& opt, const config::PipelineConfig& cfg) {
+    dds::Participant& participant, const Options& opt, const config::PipelineConfig& cfg, parallel::ThreadPool* pool) {
   std::vector<std::string> topics = cfg.ros2.input_topics;
   topics.insert(topics.end(), opt.ros_topics.begin(), opt.ros_topics.end());
   std::vector<std::string> seen;
@@ -57,7 +58,7 @@ std::vector<std::unique_ptr<Input<msg::FilteredCloud>>> ros_cloud_inputs(
     const std::string dds_topic = dds::ros2_dds_topic(topic);
     if (std::find(seen.begin(), seen.end(), dds_topic) != seen.end()) continue;
     seen.push_back(dds_topic);
-    inputs.push_back(std::make_unique<RosCloudInput>(participant, topic, cfg));
+    inputs.push_back(std::make_unique<RosCloudInput>(participant, topic, cfg, pool));
   }
   return inputs;
 }

@@ -8,13 +8,15 @@
 
 #include "common/service.hpp"
 #include "dds/ros2_topics.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::service {
 
 class RosCloudInput : public Input<msg::FilteredCloud> {
  public:
   // `ros_topic` is a ROS 2 name ("/camera/depth/points"); throws dds::DdsError for a bad one.
-  RosCloudInput(dds::Participant& participant, const std::string& ros_topic, const config::PipelineConfig& cfg);
+  RosCloudInput(dds::Participant& participant, const std::string& ros_topic, const config::PipelineConfig& cfg,
+                parallel::ThreadPool* pool);
 
   std::string topic() const override { return dds_topic_; }
   eprosima::fastdds::dds::Condition& data_available() override { return reader_.data_available(); }
@@ -27,12 +29,13 @@ class RosCloudInput : public Input<msg::FilteredCloud> {
   dds::PointCloud2Topic spec_;
   dds::Reader<dds::PointCloud2Topic> reader_;
   const config::PipelineConfig& cfg_;
+  parallel::ThreadPool* pool_;
   dds::RosCloudSample sample_;
   msg::CloudHeader header_;
 };
 
 // One input per topic of ros2.input_topics and --ros-topic, each topic once.
 std::vector<std::unique_ptr<Input<msg::FilteredCloud>>> ros_cloud_inputs(
-    dds::Participant& participant, const Options& opt, const config::PipelineConfig& cfg);
+    dds::Participant& participant, const Options& opt, const config::PipelineConfig& cfg, parallel::ThreadPool* pool);
 
 }  // namespace cloudshape::service

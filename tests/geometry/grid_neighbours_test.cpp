@@ -100,6 +100,23 @@ TEST(GridNeighbours, KnnIsExactForAnyCellSize) {
   expect_knn_exact(line_with_outlier(), 16, 0.03);
 }
 
+// With a pool, blocks of cells and the kd-tree fall-backs run on its threads: the same rows as
+// without one, on clouds whose sparse points take the fall-back (small cells, the outlier).
+TEST(GridNeighbours, AnyPoolGivesTheSameRows) {
+  const PointList surface = sphere_surface(6000, 3);
+  for (const auto& [pts, cell] : std::vector<std::pair<PointList, double>>{
+           {surface, 0.6}, {surface, 0.05}, {line_with_outlier(), 0.03}}) {
+    std::vector<std::uint32_t> serial;
+    all_nearest_neighbours(pts, 16, cell, serial);
+    for (std::size_t threads : {1u, 2u, 3u}) {
+      parallel::ThreadPool pool(threads);
+      std::vector<std::uint32_t> got;
+      all_nearest_neighbours(pts, 16, cell, got, &pool);
+      EXPECT_EQ(got, serial) << threads << " threads, cell " << cell;
+    }
+  }
+}
+
 TEST(GridNeighbours, FewerPointsThanK) {
   const PointList pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 2, 0)};
   std::vector<std::uint32_t> got;

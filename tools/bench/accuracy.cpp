@@ -75,7 +75,7 @@ ConditionReport run_condition(const std::string& name, const AccuracyOptions& op
     }
     pipeline::RecognitionResult result;
     try {
-      result = pipeline::recognize_cloud(cloud.points, cfg, cloud.source);
+      result = pipeline::recognize_cloud(cloud.points, cfg, cloud.source, options.pool);
     } catch (const std::exception& e) {
       // Scored as a cloud with no answer: every truth missed.
       std::fprintf(stderr, "\ncloudshape-bench: %s: recognize_cloud threw: %s\n",

@@ -7,6 +7,7 @@
 
 #include "accuracy_suites.hpp"
 #include "config/pipeline_config.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::bench {
 
@@ -17,6 +18,7 @@ struct AccuracyOptions {
   bool per_cloud = false;  // one line per cloud on stderr: truths, results, view note
   std::string save_dir;   // when set, every cloud is also written there as <source>.pcd
   std::string config_label;  // what --json reports as the configuration used
+  parallel::ThreadPool* pool = nullptr;  // --threads: recognize_cloud's threads (same answers)
 };
 
 // Runs the selected conditions and prints the table (or JSON) on stdout, progress on stderr.

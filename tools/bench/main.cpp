@@ -1,7 +1,7 @@
 // cloudshape-bench: how long each recognition stage takes, per shape and cloud size.
 //
 //   cloudshape-bench [--sizes 10000,100000,1000000] [--shapes box,cone,...] [--reps R]
-//                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--json]
+//                    [--warmup W] [--seed S] [--noise SIGMA] [--config FILE] [--threads N] [--json]
 //   cloudshape-bench --accuracy [--count N] [--max-points P] [--conditions clean,noise,...]
 //                    [--seed S] [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
@@ -28,6 +28,7 @@
 #include "accuracy.hpp"
 #include "bench_stats.hpp"
 #include "config/pipeline_config.hpp"
+#include "parallel/thread_pool.hpp"
 #include "scene_bench.hpp"
 #include "pipeline/recognize.hpp"
 #include "synth/perturb.hpp"
@@ -131,6 +132,7 @@ int main(int argc, char** argv) {
   std::string conditions_arg;
   bool per_cloud = false;
   std::string save_dir;
+  int threads = -1;
   app.add_option("--sizes", sizes_arg, "comma-separated point counts")->capture_default_str();
   app.add_option("--shapes", shapes_arg,
                  "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere");
@@ -144,6 +146,10 @@ int main(int argc, char** argv) {
   app.add_option("--config", config_path,
                  "pipeline configuration (default: config/pipeline.yaml, else built-in)");
   app.add_flag("--json", json, "machine-readable output");
+  app.add_option("--threads", threads,
+                 "threads of the recognition, this one included (default: execution.threads of the "
+                 "configuration, 0 = one per core); the answers are the same for any count")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("--accuracy", accuracy,
                "measure recognition accuracy instead of timings (clean, noise, outliers, "
                "density, single_view, table_view, multi, real, negatives, new_shapes)");
@@ -212,6 +218,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cloudshape-bench: %s\n", e.what());
     return 2;
   }
+  if (threads >= 0) cfg.execution.threads = threads;
+  cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
   if (accuracy) {
     if (count <= 0 || max_points == 0) {
       std::fprintf(stderr, "cloudshape-bench: --count and --max-points must be positive\n");
@@ -227,12 +235,14 @@ int main(int argc, char** argv) {
     options.per_cloud = per_cloud;
     options.save_dir = save_dir;
     options.config_label = config_path.empty() ? "built-in defaults" : config_path;
+    options.pool = &pool;
     return cs::bench::run_accuracy(options, cfg);
   }
   if (!scenes.dir.empty()) {
     scenes.default_truth = CLOUDSHAPE_SCENE_TRUTH;
     scenes.json = json;
     scenes.config_label = config_path.empty() ? "built-in defaults" : config_path;
+    scenes.pool = &pool;
     return cs::bench::run_scenes(scenes, cfg);
   }
 
@@ -260,7 +270,7 @@ int main(int argc, char** argv) {
                        n, i < warmup ? "warm-up" : "rep    ", i < warmup ? i + 1 : i - warmup + 1,
                        i < warmup ? warmup : c.reps);
         const auto t0 = std::chrono::steady_clock::now();
-        const cs::pipeline::RecognitionResult r = cs::pipeline::recognize_cloud(cloud, cfg, source);
+        const cs::pipeline::RecognitionResult r = cs::pipeline::recognize_cloud(cloud, cfg, source, &pool);
         const auto t1 = std::chrono::steady_clock::now();
         if (i < warmup) continue;
         const auto& t = r.timings;
@@ -285,9 +295,11 @@ int main(int argc, char** argv) {
     settings["solid_size"] = size;
     settings["noise"] = noise;
     settings["warmup"] = warmup;
+    settings["threads"] = pool.size();
     settings["config"] = config_path.empty() ? "built-in defaults" : config_path;
     print_json(cases, settings);
   } else {
+    std::printf("threads: %zu\n", pool.size());
     print_table(cases);
   }
   return 0;

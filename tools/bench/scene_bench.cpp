@@ -106,7 +106,7 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg) {
+SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg, parallel::ThreadPool* pool) {
   const fs::path& path = scene.path;
   const SceneTruth& truth = scene.truth;
   const io::CloudFile cloud = read_scene(path);
@@ -122,7 +122,7 @@ SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg) {
   const double c0 = cpu_ms_now();
   const auto t0 = std::chrono::steady_clock::now();
   const pipeline::RecognitionResult result =
-      pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, run.file);
+      pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, run.file, pool);
   const auto t1 = std::chrono::steady_clock::now();
   run.cpu_ms = cpu_ms_now() - c0;
   run.wall_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
@@ -186,7 +186,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
-    runs.push_back(run_scene(scenes[k], cfg));
+    runs.push_back(run_scene(scenes[k], cfg, options.pool));
   }
   if (progress) std::fprintf(stderr, "\r%70s\r", "");
   const double seconds =

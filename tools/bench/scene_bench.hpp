@@ -5,6 +5,7 @@
 #include <string>
 
 #include "config/pipeline_config.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::bench {
 
@@ -17,6 +18,7 @@ struct SceneOptions {
   bool json = false;
   bool per_scene = false;    // one line per scene on stderr
   std::string config_label;  // what --json reports as the configuration used
+  parallel::ThreadPool* pool = nullptr;  // --threads: recognize_cloud's threads (same answers)
 };
 
 // Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,

@@ -96,6 +96,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   std::string record_path;
   bool record_clouds = false;
+  int threads = -1;
   app.add_option("--config", config_path,
                  "pipeline configuration (YAML); default: config/pipeline.yaml of the sources, "
                  "else built-in defaults");
@@ -104,6 +105,10 @@ int main(int argc, char** argv) {
                  "object for a person (file, shape, dimensions, confidence, partial, ms)")
       ->check(CLI::IsMember({"json", "table"}));
   app.add_flag("--pretty", pretty, "indent the JSON (one multi-line object per file)");
+  app.add_option("--threads", threads,
+                 "threads of the recognition, this one included (default: execution.threads of the "
+                 "configuration, 0 = one per core); the answers are the same for any count")
+      ->check(CLI::NonNegativeNumber);
   app.add_flag("-v,--verbose", verbose, "debug logging on stderr");
   std::string render_dir;
   CLI::Option* render_option = app.add_option("--render", render_dir,
@@ -150,6 +155,10 @@ int main(int argc, char** argv) {
       return kExitBadInput;
     }
   }
+
+  if (threads >= 0) cfg.execution.threads = threads;
+  cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
+  spdlog::debug("recognition threads: {}", pool.size());
 
   std::optional<cs::tools::PictureFolder> pictures;
   if (render_option->count() > 0) {
@@ -208,7 +217,7 @@ int main(int argc, char** argv) {
           spdlog::debug("{}: {} points ({})", in.where, cloud.points.size(), cloud.format);
           try {
             const cs::pipeline::RecognitionResult result =
-                cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, in.source);
+                cs::pipeline::recognize_cloud(cloud.points, cloud.grid, cfg, in.source, &pool);
             if (table) {
               for (const std::string& row : cs::report::table_rows(result, layout))
                 std::cout << row << '\n';
