@@ -58,6 +58,7 @@ McapStart reader_start(const McapCloudStart& start, std::size_t& index) {
   s.after_ns = start.after_ns;
   s.counted = is_pointcloud2;
   s.skipped = [&index](std::uint64_t n) { index += static_cast<std::size_t>(n); };
+  s.unindexed = start.on_unindexed;
   return s;
 }
 
@@ -130,7 +131,8 @@ McapCloud read_mcap_cloud_at(const std::string& path, std::size_t index, const R
   McapCloudStart start;
   start.message = index;
   try {
-    read_clouds({}, path, cloud_visitor(path, only, handlers, limits, counter), limits, start, counter, true);
+    read_clouds({}, path, cloud_visitor(path, only, handlers, limits, counter), limits, start, counter,
+                true);
   } catch (const Found&) {
     return found;
   }

@@ -30,6 +30,8 @@ struct McapCloud {
 struct McapCloudStart {
   std::size_t message = 0;
   std::uint64_t after_ns = 0;
+  // Told why the file has no usable index, before it is read from its start (may be empty).
+  std::function<void(const std::string& why)> on_unindexed;
   bool at_beginning() const { return message == 0 && after_ns == 0; }
 };
 

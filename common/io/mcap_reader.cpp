@@ -105,6 +105,7 @@ private:
     detail::mcap::McapIndex index = detail::mcap::load_index(bytes_, problem);
     if (!problem.empty()) {
       summary_.index_problem = problem;
+      if (start_->unindexed) start_->unindexed(problem);
       return pos;
     }
     summary_.index_used = true;

@@ -46,6 +46,8 @@ struct McapStart {
   std::function<bool(const McapChannel&, const McapSchema*)> counted;
   // Told how many counted messages were passed over, so a caller's numbering goes on.
   std::function<void(std::uint64_t)> skipped;
+  // Told, before reading, why the file has no usable index (then read from its start).
+  std::function<void(const std::string& why)> unindexed;
 };
 
 // Messages are visited as they are read: a ReadError thrown later (a truncated tail, a bad
