@@ -86,7 +86,9 @@ names=(inject)
 # Sampled just before each process ends (inject exits once every result came; the services
 # and echo are sampled as soon as echo has printed the last result).
 while kill -0 "$inject_pid" 2>/dev/null; do
-  cpu[inject]="$(cpu_s "$inject_pid")"
+  # A sample taken as it exits reads nothing (0): keep the one before.
+  c="$(cpu_s "$inject_pid")"
+  [[ "$c" == 0 ]] || cpu[inject]="$c"
   sleep 0.2
 done
 wait "$inject_pid" || true
