@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "io/detail/crc32.hpp"
@@ -13,6 +14,7 @@
 #include "io/detail/mcap_compression.hpp"
 #include "io/detail/mcap_cursor.hpp"
 #include "io/detail/mcap_format.hpp"
+#include "io/detail/mcap_index.hpp"
 
 namespace cloudshape::io {
 namespace {
@@ -33,8 +35,11 @@ struct Record {
 
 class Reader {
 public:
-  Reader(std::string_view bytes, const std::string& name, const McapVisitor& visit, const ReadLimits& limits)
-      : bytes_(bytes), name_(name), visit_(visit), limits_(limits) {}
+  Reader(std::string_view bytes, const std::string& name, const McapVisitor& visit, const ReadLimits& limits,
+         const McapStart* start = nullptr)
+      : bytes_(bytes), name_(name), visit_(visit), limits_(limits), start_(start) {
+    reached_ = start_ == nullptr || start_->message == 0;
+  }
 
   McapReadSummary run() {
     detail::check_buffer(bytes_, name_, limits_);
@@ -49,6 +54,7 @@ public:
     }
     read_header(header);
     pos = header.end();
+    if (start_ != nullptr) pos = seek(pos);
     pos = read_data_section(pos);
     read_summary_and_footer(pos);
     return summary_;
@@ -89,6 +95,62 @@ private:
     return r;
   }
 
+  bool counted(const McapChannel& channel, const McapSchema* schema) const {
+    return !start_->counted || start_->counted(channel, schema);
+  }
+
+  // Through the index, past the chunks wholly before the start: where reading goes on.
+  std::size_t seek(std::size_t pos) {
+    std::string problem;
+    detail::mcap::McapIndex index = detail::mcap::load_index(bytes_, problem);
+    if (!problem.empty()) {
+      summary_.index_problem = problem;
+      if (start_->unindexed) start_->unindexed(problem);
+      return pos;
+    }
+    summary_.index_used = true;
+    schemas_ = std::move(index.schemas);
+    channels_ = std::move(index.channels);
+    first_log_time_ = index.message_start_time;
+    std::uint64_t passed = 0;
+    for (const detail::mcap::IndexedChunk& chunk : index.chunks) {
+      std::uint64_t in_chunk = 0;
+      for (const auto& [id, n] : chunk.counts) {
+        const McapChannel& channel = channels_.at(id);
+        const auto schema = schemas_.find(channel.schema_id);
+        if (counted(channel, schema == schemas_.end() ? nullptr : &schema->second)) in_chunk += n;
+      }
+      const bool before_message = start_->message > 0 && counted_ + in_chunk <= start_->message;
+      const bool before_time = start_->after_ns > 0 && chunk.end_time < *first_log_time_ + start_->after_ns;
+      if (!before_message && !before_time) {
+        pos = static_cast<std::size_t>(chunk.offset);
+        break;
+      }
+      counted_ += in_chunk;
+      passed += in_chunk;
+      ++summary_.chunks_skipped;
+      pos = static_cast<std::size_t>(chunk.indexes_end);
+    }
+    if (passed > 0 && start_->skipped) start_->skipped(passed);
+    return pos;
+  }
+
+  // Whether a message comes before the start (and is passed over).
+  bool before_start(const McapChannel& channel, const McapSchema* schema, const McapMessage& msg) {
+    if (start_ == nullptr) return false;
+    const bool is_counted = counted(channel, schema);
+    bool before = false;
+    if (!reached_) {
+      if (is_counted && counted_ >= start_->message) reached_ = true;
+      else before = true;
+    }
+    if (is_counted) ++counted_;
+    if (!first_log_time_) first_log_time_ = msg.log_time;
+    if (start_->after_ns > 0 && msg.log_time < *first_log_time_ + start_->after_ns) before = true;
+    if (before && is_counted && start_->skipped) start_->skipped(1);
+    return before;
+  }
+
   void read_header(const Record& r) {
     m::RecordCursor c(r.content, name_, where(r));
     summary_.profile = std::string(c.string("profile"));
@@ -104,6 +166,8 @@ private:
       const Record r = next_record(pos, "file");
       switch (r.opcode) {
         case m::kDataEnd: {
+          // Chunks skipped unread: the bytes the CRC covers were not all read, and are not now.
+          if (summary_.chunks_skipped > 0) return r.end();
           data_crc_.update(bytes_.substr(0, r.offset));
           check_data_end(r);
           return r.end();
@@ -221,6 +285,7 @@ private:
     }
     const McapSchema* schema = nullptr;
     if (channel->second.schema_id != 0) schema = &schemas_.at(channel->second.schema_id);
+    if (before_start(channel->second, schema, msg)) return;
     ++summary_.messages;
     visit_(channel->second, schema, msg);
   }
@@ -406,6 +471,10 @@ private:
   const std::string& name_;
   const McapVisitor& visit_;
   const ReadLimits& limits_;
+  const McapStart* start_;
+  bool reached_ = true;                         // the start's message was reached
+  std::uint64_t counted_ = 0;                   // counted messages so far, read or skipped
+  std::optional<std::uint64_t> first_log_time_;  // the origin of McapStart::after_ns
   std::map<std::uint16_t, McapSchema> schemas_;
   std::map<std::uint16_t, McapChannel> channels_;
   std::string chunk_buffer_;
@@ -423,6 +492,21 @@ McapReadSummary read_mcap_buffer(std::string_view bytes, const std::string& name
 McapReadSummary read_mcap_file(const std::string& path, const McapVisitor& visit, const ReadLimits& limits) {
   const detail::MappedFile file(path, limits);
   return read_mcap_buffer(file.bytes(), path, visit, limits);
+}
+
+}  // namespace cloudshape::io
+
+namespace cloudshape::io {
+
+McapReadSummary read_mcap_buffer_from(std::string_view bytes, const std::string& name, const McapStart& start,
+                                      const McapVisitor& visit, const ReadLimits& limits) {
+  return Reader(bytes, name, visit, limits, &start).run();
+}
+
+McapReadSummary read_mcap_file_from(const std::string& path, const McapStart& start, const McapVisitor& visit,
+                                    const ReadLimits& limits) {
+  const detail::MappedFile file(path, limits);
+  return read_mcap_buffer_from(file.bytes(), path, start, visit, limits);
 }
 
 }  // namespace cloudshape::io

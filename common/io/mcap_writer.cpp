@@ -148,6 +148,7 @@ void McapWriter::flush_chunk() {
   emit(compressed);
 
   const std::uint64_t index_start = offset_;
+  if (!options_.indexed) chunk_.index.clear();
   for (const auto& [channel, entries] : chunk_.index) {
     std::string index;
     m::put<std::uint16_t>(index, channel);
@@ -233,7 +234,7 @@ void McapWriter::write_summary() {
     m::put<std::uint64_t>(c, e.uncompressed_size);
     indexes.push_back(std::move(c));
   }
-  group(m::kChunkIndex, indexes);
+  if (options_.indexed) group(m::kChunkIndex, indexes);
 
   const std::uint64_t offsets_start = summary_start + summary.size();
   for (const Group& g : groups) {

@@ -21,6 +21,9 @@ struct McapWriterOptions {
   McapCompression compression = McapCompression::zstd;
   // Off: messages go straight into the data section, unindexed (for tests of such files).
   bool chunked = true;
+  // Off: chunks without message indexes and a summary without chunk indexes (as some writers
+  // make them: readers must then read from the start).
+  bool indexed = true;
   // A chunk is closed once its uncompressed records reach this size: a player decodes one
   // chunk to seek, so a chunk should hold about a second of a camera's clouds at most.
   std::size_t chunk_size = 4u << 20;

@@ -28,7 +28,8 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   ros2_cyclone 76
   ros2_fastdds 77
   ros2_bad_clouds 78
-  ros2_latency 79)
+  ros2_latency 79
+  mcap_replay_start 80)
 
 set(_names "")
 set(_ids "")

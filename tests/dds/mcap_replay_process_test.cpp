@@ -25,9 +25,10 @@ constexpr std::uint64_t kSecond = 1'000'000'000;
 
 // The synthetic suite's clouds as PointCloud2 messages 0.4 s apart on /camera/points (float32
 // and float64 alternating), with one cloud on /other in between.
-std::string write_recording(const std::string& dir, const std::vector<std::string>& clouds) {
+std::string write_recording(const std::string& dir, const std::vector<std::string>& clouds,
+                            const io::McapWriterOptions& options = {}) {
   const std::string path = dir + "/rec.mcap";
-  io::McapWriter writer(path);
+  io::McapWriter writer(path, options);
   const auto schema =
       writer.add_schema(io::kPointCloud2SchemaName, "ros2msg", io::ros2_schema_text(io::kPointCloud2SchemaName));
   const auto camera = writer.add_channel(schema, "/camera/points", "cdr");
@@ -67,6 +68,32 @@ TEST(DdsMcapReplay, EveryMessageAtItsTimeGivesWhatRecognizeGives) {
   // Three gaps of 0.4 s as recorded; the waits for results come on top.
   EXPECT_GE(seconds, 1.2) << inj.err;
   ASSERT_EQ(p.wait_echo(), 0) << "echo did not print every result; its log:\n" << read_text(p.log_path("echo"));
+  expect_same_results(expected, p.echo_lines());
+  p.stop_services();
+}
+
+// inject --start 3 on a recording of a chunk per message: messages 3 and 4 only, named as
+// recognize --start names them, through the index (no note that the file has none).
+TEST(DdsMcapReplay, StartSeeksToAMessage) {
+  Pipeline p("mcap_replay_start", domains::mcap_replay_start);
+  std::vector<std::string> clouds = synthetic_clouds(p.dir() + "/clouds", 8000);
+  clouds.resize(4);
+  io::McapWriterOptions options;
+  options.chunk_size = 1;
+  const std::string rec = write_recording(p.dir(), clouds, options);
+  const std::vector<std::string> expected = recognize({"--start", "3", rec});
+  ASSERT_EQ(expected.size(), 2u);
+  EXPECT_NE(expected[0].find("\"rec.mcap#3\""), std::string::npos) << expected[0];
+
+  p.start_echo(2);
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject({"--start", "3", rec});
+  EXPECT_EQ(inj.exit_code, 0) << inj.err;
+  EXPECT_NE(inj.err.find("sent rec.mcap#3 as cloud 0"), std::string::npos) << inj.err;
+  EXPECT_NE(inj.err.find("sent rec.mcap#4 as cloud 1"), std::string::npos) << inj.err;
+  EXPECT_EQ(inj.err.find("rec.mcap#2"), std::string::npos) << inj.err;
+  EXPECT_EQ(inj.err.find("no usable index"), std::string::npos) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
   expect_same_results(expected, p.echo_lines());
   p.stop_services();
 }

@@ -1,5 +1,7 @@
 // The MCAP fuzz check: a recording is read or refused with one ReadError; what was read, written
-// again by McapWriter, reads back the same; its PointCloud2 messages decode to finite points.
+// again by McapWriter, reads back the same; its PointCloud2 messages decode to finite points; a
+// read from message k on (through the index when the reader trusts it) gives a tail of them.
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -60,6 +62,38 @@ std::string rewrite(const std::vector<Seen>& messages) {
   return out.str();
 }
 
+// From message k on: without the index exactly messages[k..]; through it a tail of the messages
+// all the same (an index can lie consistently about chunks it lets the reader skip unread, and
+// the reader then starts at a true chunk, never elsewhere).
+std::string check_seek(std::string_view bytes, const std::vector<Seen>& messages, std::size_t k,
+                       const io::ReadLimits& limits) {
+  std::vector<Seen> tail;
+  io::McapReadSummary summary;
+  io::McapStart start;
+  start.message = k;
+  try {
+    summary = io::read_mcap_buffer_from(
+        bytes, "fuzz.mcap", start,
+        [&](const io::McapChannel& c, const io::McapSchema* s, const io::McapMessage& m) {
+          tail.push_back({c.topic, c.message_encoding, s ? s->name : "", s ? s->data : "", m.log_time,
+                          m.publish_time, std::string(m.data)});
+        },
+        limits);
+  } catch (const io::ReadError& e) {
+    // The index's channels disagreeing with a chunk's is refused: one line, like any refusal.
+    return std::string(e.what()).find('\n') == std::string::npos ? "" : "a ReadError message spans lines";
+  }
+  if (tail.size() > messages.size() ||
+      !std::equal(tail.begin(), tail.end(), messages.end() - static_cast<std::ptrdiff_t>(tail.size()))) {
+    return "a read from message " + std::to_string(k) + " gave messages the whole read did not end with";
+  }
+  if (!summary.index_used && tail.size() != messages.size() - std::min(k, messages.size())) {
+    return "a read from message " + std::to_string(k) + " without the index gave " + std::to_string(tail.size()) +
+           " messages";
+  }
+  return {};
+}
+
 std::string one_line(const io::ReadError& e) {
   return std::string(e.what()).find('\n') == std::string::npos ? "" : "a ReadError message spans lines";
 }
@@ -73,6 +107,9 @@ std::string check_mcap_input(std::string_view bytes) {
     messages = read_messages(bytes, limits);
   } catch (const io::ReadError& e) {
     return one_line(e);
+  }
+  for (const std::size_t k : {std::size_t{1}, messages.size() / 2}) {
+    if (std::string problem = check_seek(bytes, messages, k, limits); !problem.empty()) return problem;
   }
   // A schema without a name cannot be told from "no schema" once rewritten.
   for (const Seen& m : messages) {

@@ -212,5 +212,62 @@ TEST(IoMcapClouds, ReadsOneMessageAgainByItsIndex) {
                     "no such PointCloud2 message (the recording holds 3)");
 }
 
+// --start: message N keeps its number (FILE.mcap#N), other topics do not count, and a cloud
+// start in seconds counts from the recording's first log time.
+TEST(IoMcapClouds, StartsAtAMessageOrATimeKeepingTheNumbers) {
+  for (const bool indexed : {true, false}) {
+    SCOPED_TRACE(indexed ? "indexed" : "without indexes");
+    std::ostringstream out;
+    {
+      McapWriterOptions options;
+      options.chunk_size = 1;
+      options.indexed = indexed;
+      McapWriter writer(out, "rec.mcap", options);
+      const auto schema =
+          writer.add_schema(kPointCloud2SchemaName, "ros2msg", ros2_schema_text(kPointCloud2SchemaName));
+      const auto cam = writer.add_channel(schema, "/points", "cdr");
+      const auto log = writer.add_channel(0, "/rosout", "json");
+      for (std::size_t n = 0; n < 8; ++n) {
+        writer.write(log, 100 * n, 0, "{}");
+        writer.write(cam, 100 * n + 50, 0, pointcloud2_to_cdr(cloud_message(sample_points(n + 3), {}, {})));
+      }
+    }
+    const auto indexes = [&](const McapCloudStart& start) {
+      std::vector<std::size_t> got;
+      const McapReadSummary read = read_mcap_clouds_buffer(out.str(), "rec.mcap", {},
+                                                           {[&](McapCloud&& c) {
+                                                              EXPECT_EQ(c.cloud.points.size(), c.index + 3);
+                                                              got.push_back(c.index);
+                                                            },
+                                                            [](const ReadError& e) { ADD_FAILURE() << e.what(); }},
+                                                           {}, start);
+      EXPECT_EQ(read.index_used, indexed && !start.at_beginning());
+      return got;
+    };
+    using V = std::vector<std::size_t>;
+    EXPECT_EQ(indexes(parse_mcap_start("5")), (V{5, 6, 7}));
+    EXPECT_EQ(indexes(parse_mcap_start("8")), V{});
+    // 0.000000451 s = 451 ns after the first message (0): clouds logged at 550 and later.
+    EXPECT_EQ(indexes(parse_mcap_start("0.000000451s")), (V{5, 6, 7}));
+    EXPECT_EQ(indexes(parse_mcap_start("0s")), (V{0, 1, 2, 3, 4, 5, 6, 7}));
+  }
+}
+
+TEST(IoMcapClouds, ABadStartSaysWhatIsExpected) {
+  for (const char* bad : {"", "-1", "1.5", "s", "2.5ms", "1e3s", "1.2.3s", "99999999999999999999999", "99999999999s"}) {
+    SCOPED_TRACE(bad);
+    try {
+      parse_mcap_start(bad);
+      ADD_FAILURE() << "accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), "--start '" + std::string(bad) +
+                                           "': expected a message index (e.g. 150) or seconds into the recording "
+                                           "(e.g. 2.5s)");
+    }
+  }
+  EXPECT_EQ(parse_mcap_start("150").message, 150u);
+  EXPECT_EQ(parse_mcap_start("2.5s").after_ns, 2500000000u);
+}
+
 }  // namespace
 }  // namespace cloudshape::io

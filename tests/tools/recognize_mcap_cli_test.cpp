@@ -184,6 +184,45 @@ TEST_F(RecognizeMcapCli, ANonMcapFileNamedMcapIsOneError) {
   EXPECT_EQ(r.err, "cloudshape-recognize: " + path("fake.mcap") + ": byte 0: not an MCAP file: it does not start with the MCAP magic\n");
 }
 
+// --start: the clouds from that message or time on, numbered from the file's first message; the
+// file has one chunk per message and its indexes, so the chunks before the start are not read.
+TEST_F(RecognizeMcapCli, StartsAtAMessageOrATime) {
+  const ProcessResult at_message = run({"--start", "2", path("rec.mcap")});
+  EXPECT_EQ(at_message.exit_code, 2) << "message 3 has no z field";
+  auto got = results(at_message);
+  ASSERT_EQ(got.size(), 2u) << at_message.err;
+  EXPECT_EQ(got[0]["source"], "rec.mcap#2");
+  EXPECT_EQ(got[1]["source"], "rec.mcap#4");
+  EXPECT_EQ(comparable(got[0]), comparable(results(run({path("box_organized.pcd")}))[0]));
+  // Log times 100 ... 500 ns: 0.00000035 s after the first message is 450 ns: message 4 on.
+  const ProcessResult at_time = run({"--start", "0.00000035s", path("rec.mcap")});
+  EXPECT_EQ(at_time.exit_code, 0) << at_time.err;
+  got = results(at_time);
+  ASSERT_EQ(got.size(), 1u) << at_time.err;
+  EXPECT_EQ(got[0]["source"], "rec.mcap#4");
+  EXPECT_TRUE(at_time.err.empty()) << at_time.err;
+}
+
+TEST_F(RecognizeMcapCli, ABadStartIsRefused) {
+  const ProcessResult r = run({"--start", "-3", path("rec.mcap")});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_EQ(r.err, "cloudshape-recognize: --start '-3': expected a message index (e.g. 150) or seconds into the "
+                   "recording (e.g. 2.5s)\n");
+}
+
+// A recording without a usable index (here cut short: no Footer) is read from its start, said once.
+TEST_F(RecognizeMcapCli, AStartWithoutAnIndexReadsFromTheBeginning) {
+  const ProcessResult r = run({"--start", "1", path("cut.mcap")});
+  EXPECT_EQ(r.exit_code, 2);
+  const auto got = results(r);
+  ASSERT_GE(got.size(), 1u) << r.err;
+  EXPECT_EQ(got.front()["source"], "cut.mcap#1");
+  EXPECT_NE(r.err.find(path("cut.mcap") + ": no usable index (the file does not end with a Footer and the MCAP "
+                       "magic): read from the start to --start"),
+            std::string::npos)
+      << r.err;
+}
 
 TEST(RecognizeRecordCli, RecordOptionsAreChecked) {
   const ProcessResult clouds_alone =

@@ -1,11 +1,12 @@
 // cloudshape-mcap-bench: the recordings of the MCAP benchmark (tools/bench_mcap.sh) and the speed
 // of reading them.
 //   cloudshape-mcap-bench write FRAME.pcd... --frames N --rate HZ [--compression none|lz4|zstd] -o OUT.mcap
-//   cloudshape-mcap-bench read FILE.mcap [--reps N] [--decode]
+//   cloudshape-mcap-bench read FILE.mcap [--reps N] [--decode] [--start N]
 // write: N PointCloud2 messages (the frames in turn; float32 x y z rgb, 16 bytes a point, organized
 // frames keep their grid) 1/HZ apart on /camera/depth/points. read: the median of N reads of the
 // whole file (every message visited; --decode: every PointCloud2 decoded into points too), as
-// file MB/s (MB = 10^6 bytes) on stdout, one JSON line.
+// file MB/s (MB = 10^6 bytes) on stdout, one JSON line; --start N: from message N on, through
+// the index (the JSON says whether it was used), to time a seek.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -51,10 +52,13 @@ int write_recording(const std::vector<std::string>& frames, std::size_t count, d
   return 0;
 }
 
-int read_speed(const std::string& path, int reps, bool decode) {
+int read_speed(const std::string& path, int reps, bool decode, std::uint64_t from) {
   const double mb = static_cast<double>(std::filesystem::file_size(path)) / 1e6;
   std::vector<double> seconds;
   std::uint64_t messages = 0, points = 0;
+  bool index_used = false;
+  cs::io::McapStart start;
+  start.message = from;
   for (int r = 0; r < reps; ++r) {
     messages = points = 0;
     const auto t0 = std::chrono::steady_clock::now();
@@ -66,11 +70,15 @@ int read_speed(const std::string& path, int reps, bool decode) {
                                 },
                                 [](const cs::io::ReadError& e) { throw e; }});
     } else {
-      cs::io::read_mcap_file(path, [&](const cs::io::McapChannel&, const cs::io::McapSchema*,
-                                       const cs::io::McapMessage& m) {
+      const auto visit = [&](const cs::io::McapChannel&, const cs::io::McapSchema*, const cs::io::McapMessage& m) {
         ++messages;
         points += m.data.size();  // touch the size only: the reader is what is timed
-      });
+      };
+      if (from > 0) {
+        index_used = cs::io::read_mcap_file_from(path, start, visit).index_used;
+      } else {
+        cs::io::read_mcap_file(path, visit);
+      }
     }
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
@@ -81,6 +89,8 @@ int read_speed(const std::string& path, int reps, bool decode) {
   j["mb"] = mb;
   j["messages"] = messages;
   j["decode"] = decode;
+  j["start"] = from;
+  j["index_used"] = index_used;
   j["median_s"] = median;
   j["mb_per_s"] = mb / median;
   j["messages_per_s"] = static_cast<double>(messages) / median;
@@ -99,6 +109,7 @@ int main(int argc, char** argv) {
   std::string compression = "none", out, file;
   int reps = 3;
   bool decode = false;
+  std::uint64_t from = 0;
   CLI::App* write = app.add_subcommand("write", "N PointCloud2 messages of the frames, 1/HZ apart");
   write->add_option("frames", frames, "organized PCD frames, used in turn")->required();
   write->add_option("--frames", count, "messages")->capture_default_str();
@@ -111,6 +122,8 @@ int main(int argc, char** argv) {
   read->add_option("file", file, "the recording")->required();
   read->add_option("--reps", reps, "reads; the median is reported")->check(CLI::PositiveNumber)->capture_default_str();
   read->add_flag("--decode", decode, "decode every PointCloud2 into points too");
+  read->add_option("--start", from, "read from this message on, through the index (not with --decode)")
+      ->excludes("--decode");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -118,7 +131,7 @@ int main(int argc, char** argv) {
   }
   try {
     if (*write) return write_recording(frames, count, rate, compression, out);
-    return read_speed(file, reps, decode);
+    return read_speed(file, reps, decode, from);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cloudshape-mcap-bench: %s\n", e.what());
     return 1;

@@ -1,4 +1,5 @@
-// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--topic NAME]... [--resend-after S] FILE_OR_DIR...
+// cloudshape-inject [--domain N] [--security DIR] [--rate HZ] [--loop | --count N] [--topic NAME]... [--start N|Ts]
+//                   [--resend-after S] FILE_OR_DIR...
 // Reads clouds with io::read_cloud, and the PointCloud2 messages of .mcap recordings at their
 // recorded times, and publishes each on the raw-cloud topic (an organized one with its pixels),
 // once a subscriber (the ingest service) is there, then waits for each cloud's result and sends
@@ -81,6 +82,10 @@ int main(int argc, char** argv) {
                  "recorded times)");
   app.add_option("--topic", topics,
                  "of .mcap recordings, replay only this PointCloud2 topic (repeat for more; default: all)");
+  std::string start_text;
+  app.add_option("--start", start_text,
+                 "of .mcap recordings, start at this PointCloud2 message (e.g. 150: FILE.mcap#150 first) or "
+                 "this long into the recording (e.g. 2.5s), seeking through the file's index");
   app.add_flag("--loop", loop, "send the files again and again until interrupted");
   app.add_option("--count", count, "send this many clouds in all, going round the files (e.g. a steady-rate run)");
   app.add_option("--wait", wait_s, "seconds to wait for a subscriber (default 60)");
@@ -100,6 +105,13 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
+  }
+  cs::inject::ReplaySettings replay{{topics.begin(), topics.end()}, rate <= 0, {}};
+  try {
+    if (!start_text.empty()) replay.start = cs::io::parse_mcap_start(start_text);
+  } catch (const std::invalid_argument& e) {
+    say(e.what());
+    return 2;
   }
   std::signal(SIGINT, on_signal);
   std::signal(SIGTERM, on_signal);
@@ -145,7 +157,6 @@ int main(int argc, char** argv) {
       ++sent;
       return true;
     };
-    const cs::inject::ReplaySettings replay{{topics.begin(), topics.end()}, rate <= 0};
     bool stopped = false;
     do {
       for (const std::string& path : files) {
@@ -163,8 +174,13 @@ int main(int argc, char** argv) {
                 [&](const cs::io::ReadError& e) {
                   say(e.what());
                   status = 2;
+                },
+                [&](const std::string& why) {
+                  say(path + ": no usable index (" + why + "): read from the start to --start");
                 });
-            if (stats.clouds == 0) say(path + ": no PointCloud2 message to replay");
+            if (stats.clouds == 0) {
+              say(path + ": no PointCloud2 message to replay" + (replay.start.at_beginning() ? "" : " from --start"));
+            }
             if (replay.recorded_timing && stats.clouds > 0) {
               char late[96];
               std::snprintf(late, sizeof late, ": %zu cloud(s) replayed, at most %.3f s behind the recorded times",

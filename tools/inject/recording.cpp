@@ -27,7 +27,8 @@ void sleep_until(Clock::time_point when, const std::atomic<bool>& stop) {
 
 ReplayStats replay_recording(const std::string& path, const ReplaySettings& settings, const std::atomic<bool>& stop,
                              const std::function<bool(FileCloud&&, std::size_t index)>& send,
-                             const std::function<void(const io::ReadError&)>& on_bad) {
+                             const std::function<void(const io::ReadError&)>& on_bad,
+                             const std::function<void(const std::string&)>& on_unindexed) {
   ReplayStats stats;
   std::optional<std::uint64_t> first_log_time;
   Clock::time_point started;
@@ -57,8 +58,11 @@ ReplayStats replay_recording(const std::string& path, const ReplaySettings& sett
         ++stats.clouds;
       },
       on_bad};
+  io::McapCloudStart start = settings.start;
+  start.on_unindexed = on_unindexed;
   try {
-    io::read_mcap_clouds(path, settings.topics, handlers);
+    const io::McapReadSummary read = io::read_mcap_clouds(path, settings.topics, handlers, {}, start);
+    stats.chunks_skipped = read.chunks_skipped;
   } catch (const Stopped&) {
   }
   return stats;

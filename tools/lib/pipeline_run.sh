@@ -2,7 +2,8 @@
 # a scratch folder, cloudshape-echo and the five services on one domain, and their clean-up.
 # Sets: bin (build/bin), work (the scratch folder, removed on exit; the services log to
 # $work/logs), launch (tools/launch.sh), echo_pid, helper_pids (add the script's own
-# background processes; they are ended first).
+# background processes; they are ended first), launch_args (more `launch.sh start` arguments,
+# e.g. --replicas ingest=2; empty).
 # shellcheck shell=bash
 # shellcheck disable=SC2034  # bin, work, launch: read by the scripts that source this
 
@@ -12,6 +13,7 @@ export CLOUDSHAPE_LOG_DIR="$work/logs"
 launch="$CLOUDSHAPE_REPO/tools/launch.sh"
 echo_pid=""
 helper_pids=()
+launch_args=()
 
 # shellcheck disable=SC2317  # called by the EXIT trap
 cs_pipeline_cleanup() {
@@ -31,5 +33,5 @@ cs_start_pipeline() {
   shift 3
   "$bin/cloudshape-echo" --domain "$domain" "$@" >"$out" 2>"$err" &
   echo_pid=$!
-  "$launch" start --domain "$domain" >/dev/null 2>&1
+  "$launch" start --domain "$domain" "${launch_args[@]}" >/dev/null 2>&1
 }

@@ -18,7 +18,8 @@ std::string read_error_text(const std::string& path, const io::ReadError& e) {
   return text;
 }
 
-void read_recording(const std::string& path, const io::ReadLimits& limits,
+void read_recording(const std::string& path, const io::ReadLimits& limits, const io::McapCloudStart& start,
+                    const std::function<void(const std::string&)>& on_note,
                     const std::function<void(InputCloud&)>& on_cloud,
                     const std::function<void(const std::string&)>& on_failure) {
   const std::string name = std::filesystem::path(path).filename().string();
@@ -32,8 +33,12 @@ void read_recording(const std::string& path, const io::ReadLimits& limits,
         on_cloud(in);
       },
       [&](const io::ReadError& e) { on_failure(read_error_text(path, e)); }};
+  io::McapCloudStart from = start;
+  from.on_unindexed = [&](const std::string& why) {
+    on_note(path + ": no usable index (" + why + "): read from the start to --start");
+  };
   try {
-    io::read_mcap_clouds(path, {}, handlers, limits);
+    io::read_mcap_clouds(path, {}, handlers, limits, from);
   } catch (const io::ReadError& e) {
     on_failure(read_error_text(path, e));
   }
@@ -41,11 +46,12 @@ void read_recording(const std::string& path, const io::ReadLimits& limits,
 
 }  // namespace
 
-void for_each_input_cloud(const std::string& path, const io::ReadLimits& limits,
+void for_each_input_cloud(const std::string& path, const io::ReadLimits& limits, const io::McapCloudStart& start,
+                          const std::function<void(const std::string&)>& on_note,
                           const std::function<void(InputCloud&)>& on_cloud,
                           const std::function<void(const std::string&)>& on_failure) {
   if (io::is_mcap_path(path)) {
-    read_recording(path, limits, on_cloud, on_failure);
+    read_recording(path, limits, start, on_note, on_cloud, on_failure);
     return;
   }
   InputCloud in;

@@ -18,8 +18,10 @@ struct InputCloud {
 };
 
 // Calls on_cloud for each cloud read, on_failure with one line for each file or message that
-// cannot be read (the other messages of a recording are still read).
-void for_each_input_cloud(const std::string& path, const io::ReadLimits& limits,
+// cannot be read (the other messages of a recording are still read). A recording is read from
+// `start` on (through its index when it has a usable one; on_note says when it has none).
+void for_each_input_cloud(const std::string& path, const io::ReadLimits& limits, const io::McapCloudStart& start,
+                          const std::function<void(const std::string&)>& on_note,
                           const std::function<void(InputCloud&)>& on_cloud,
                           const std::function<void(const std::string&)>& on_failure);
 

@@ -1,5 +1,5 @@
 // cloudshape-recognize [--config FILE] [--format json|table] [--pretty] [--verbose]
-//                      [--render DIR] [--record OUT.mcap [--record-clouds]] FILE...
+//                      [--render DIR] [--record OUT.mcap [--record-clouds]] [--start N|Ts] FILE...
 // Runs the whole recognition pipeline in this process and prints one JSON object per input
 // file, or per PointCloud2 message of a .mcap recording, on stdout (JSON Lines; INTERFACE.md),
 // or with --format table a header and one aligned line per object for a person. stdout
@@ -120,6 +120,10 @@ int main(int argc, char** argv) {
                  "profile ros2: Foxglove and Lichtblick open it)");
   app.add_flag("--record-clouds", record_clouds, "with --record: the input clouds too, as sensor_msgs/PointCloud2")
       ->needs("--record");
+  std::string start_text;
+  app.add_option("--start", start_text,
+                 "of .mcap recordings, start at this PointCloud2 message (e.g. 150: FILE.mcap#150 first) or "
+                 "this long into the recording (e.g. 2.5s), seeking through the file's index");
   app.add_option("files", files, "point-cloud files and MCAP recordings")->required();
   try {
     app.parse(argc, argv);
@@ -129,6 +133,13 @@ int main(int argc, char** argv) {
   }
 
   set_up_logging(verbose);
+  cs::io::McapCloudStart start;
+  try {
+    if (!start_text.empty()) start = cs::io::parse_mcap_start(start_text);
+  } catch (const std::invalid_argument& e) {
+    report_failure(e.what());
+    return kExitBadInput;
+  }
   const bool table = format == "table";
   cs::report::TableLayout layout;
   if (table) {
@@ -191,7 +202,7 @@ int main(int argc, char** argv) {
   if (table) std::cout << cs::report::table_header(layout) << '\n';
   for (const std::string& path : files) {
     cs::recognize::for_each_input_cloud(
-        path, limits,
+        path, limits, start, [&](const std::string& note) { spdlog::warn("{}", note); },
         [&](cs::recognize::InputCloud& in) {
           const cs::io::CloudFile& cloud = in.cloud;
           if (cloud.points.empty()) {
