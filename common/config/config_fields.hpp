@@ -41,6 +41,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("edge_curvature", c.edge_curvature);
   f("convex_tolerance_degrees", c.convex_tolerance_degrees);
   f("convex_share", c.convex_share);
+  f("cavity_concavity", c.cavity_concavity);
+  f("cavity_gap", c.cavity_gap);
   f("structure_max_planes", c.structure_max_planes);
   f("structure_min_share", c.structure_min_share);
   f("structure_band", c.structure_band);

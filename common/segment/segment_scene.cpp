@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/pca.hpp"
+#include "segment/cavity_join.hpp"
 #include "segment/convex_segments.hpp"
 #include "segment/neighbour_graph.hpp"
 
@@ -43,7 +44,8 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
   std::vector<char> removed(g.size(), 0);
   out.structure = remove_structure(g, cfg, removed, pool);
   if (!g.viewpoint) orient_normals_outward(g, removed);
-  const std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
+  std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
+  join_cavities(g, label, cfg);
 
   std::int32_t segments = 0;
   for (std::int32_t l : label) segments = std::max(segments, l + 1);
