@@ -37,6 +37,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("depth_jump", c.depth_jump);
   f("normal_radius", c.normal_radius);
   f("normal_neighbours", c.normal_neighbours);
+  f("line_spread", c.line_spread);
+  f("line_max_neighbours", c.line_max_neighbours);
   f("smooth_degrees", c.smooth_degrees);
   f("edge_curvature", c.edge_curvature);
   f("convex_tolerance_degrees", c.convex_tolerance_degrees);

@@ -90,6 +90,8 @@ struct SegmentConfig {
   double depth_jump = 0.02;                // organized: neighbours whose ranges differ by more than this share of the range are not connected
   std::int64_t normal_radius = 2;          // organized: half-width of a node's normal window, in nodes
   std::int64_t normal_neighbours = 16;     // unorganized: nodes in a node's normal neighbourhood
+  double line_spread = 0.1;                // unorganized: a neighbourhood spreading less than this across (share of along) is one scan line ...
+  std::int64_t line_max_neighbours = 128;  // ... and grows up to this many nodes until it spans a surface (lidar rings)
   double smooth_degrees = 10.0;            // neighbouring nodes with normals within this angle grow one smooth patch
   double edge_curvature = 0.04;            // ... over surface nodes: a node curved more than this (surface variation) lies on an edge
   double convex_tolerance_degrees = 15.0;  // a junction whose normals differ by less than this is convex whatever its sign

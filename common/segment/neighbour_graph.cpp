@@ -6,7 +6,9 @@
 
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/grid_neighbours.hpp"
+#include "geometry/pca.hpp"
 #include "geometry/voxel_grid.hpp"
+#include "segment/line_neighbourhoods.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -32,8 +34,9 @@ struct Moments {
 };
 
 // Normal (smallest principal direction) and surface variation; a default up normal when the
-// neighbourhood is too small to say.
-void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature) {
+// neighbourhood is too small to say. `spread`, if given: second over first standard deviation.
+void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, double* spread = nullptr) {
+  if (spread) *spread = 1.0;
   if (m.count < 3) {
     normal = Eigen::Vector3d::UnitZ();
     curvature = 1.0 / 3.0;
@@ -46,6 +49,33 @@ void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature) {
   normal = eig.eigenvectors().col(0).normalized();
   const double total = eig.eigenvalues().sum();
   curvature = total > 0.0 ? std::max(0.0, eig.eigenvalues()(0)) / total : 0.0;
+  if (spread) {
+    const double major = eig.eigenvalues()(2);
+    *spread = major > 0.0 ? std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / major) : 0.0;
+  }
+}
+
+// The CSR adjacency with the extra (symmetric) edges added, each neighbour listed once.
+void add_edges(NeighbourGraph& g, const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges) {
+  if (edges.empty()) return;
+  std::vector<std::vector<std::uint32_t>> extra(g.size());
+  for (const auto& [a, b] : edges) {
+    extra[a].push_back(b);
+    extra[b].push_back(a);
+  }
+  std::vector<std::uint32_t> begin(g.size() + 1, 0), adjacency;
+  adjacency.reserve(g.adjacency.size() + 2 * edges.size());
+  std::vector<std::uint32_t> near;
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    near.assign(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
+    near.insert(near.end(), extra[n].begin(), extra[n].end());
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    adjacency.insert(adjacency.end(), near.begin(), near.end());
+    begin[n + 1] = static_cast<std::uint32_t>(adjacency.size());
+  }
+  g.adjacency_begin.swap(begin);
+  g.adjacency.swap(adjacency);
 }
 
 void fill_spacing(NeighbourGraph& g, double fallback) {
@@ -284,14 +314,33 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   geometry::all_nearest_neighbours(g.nodes, k, 0.75 * std::sqrt(static_cast<double>(k)) * voxel, knn, pool);
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
+  std::vector<char> linear(g.size(), 0);
   parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n) {
       Moments m;
       m.origin = g.nodes[n];
       for (std::size_t j = 0; j < k; ++j) m.add(g.nodes[knn[n * k + j]]);
-      normal_of(m, g.normals[n], g.curvature[n]);
+      double spread = 1.0;
+      normal_of(m, g.normals[n], g.curvature[n], &spread);
+      linear[n] = m.count >= 3 && spread < cfg.line_spread ? 1 : 0;
     }
   });
+  // A node whose voxel neighbours lie on a line through it (one on each side at least: a pair of
+  // stray points is no ring) sits on one scan ring.
+  std::vector<Eigen::Vector3d> line_of(g.size(), Eigen::Vector3d::Zero());
+  parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint32_t> around;
+    for (std::size_t n = begin; n < end; ++n) {
+      around.assign(1, static_cast<std::uint32_t>(n));
+      g.for_neighbours(static_cast<std::uint32_t>(n), [&](std::uint32_t m) { around.push_back(m); });
+      if (around.size() < 3 || spread_across(g.nodes, around) >= cfg.line_spread) continue;
+      line_of[n] = geometry::compute_pca(g.nodes, around).eigenvectors.col(2).normalized();
+      if (!line_of[n].allFinite()) line_of[n].setZero();
+    }
+  });
+  // The spacing stays that of the voxel neighbours (along a ring): the extra edges only join
+  // rings into one surface.
+  add_edges(g, widen_line_neighbourhoods(g.nodes, linear, line_of, cfg, g.normals, g.curvature));
   return g;
 }
 
