@@ -24,6 +24,7 @@ struct SideRun {
   double d = 0.0;
   double t_lo = 0.0, t_hi = 0.0;
   double weight = 0.0;  // points behind the line
+  bool seen = true;     // a side face's; false for a side only a cap's border shows
   Eigen::Vector2d tangent() const { return {-n.y(), n.x()}; }
   Eigen::Vector2d start() const { return d * n + t_lo * tangent(); }
   Eigen::Vector2d end() const { return d * n + t_hi * tangent(); }
@@ -35,11 +36,29 @@ struct AxisChoice {
   std::size_t points = 0;
 };
 
+// A right prism has two cap planes, at its two ends: a face along the axis anywhere between
+// them (the inner step of an L seen along one of its arms) says the axis is another.
+bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
+  if (c.caps.empty()) return true;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Point& p : in.cloud) {
+    lo = std::min(lo, p.dot(c.axis));
+    hi = std::max(hi, p.dot(c.axis));
+  }
+  const double band = std::max(in.cfg.cap_band * in.resolution, in.cfg.face_slab * (hi - lo));
+  for (const DetectedPlane* f : c.caps) {
+    const double at = detail::face_position(in.cloud, *f, c.axis);
+    const bool up = f->plane.normal.dot(c.axis) > 0;
+    if (std::abs(at - (up ? hi : lo)) > band) return false;
+  }
+  return true;
+}
+
 // Axis hypotheses: every face's normal (a cap) and every two faces' common perpendicular (two
 // sides); the one whose sides and caps hold most points wins. At least three sides are needed
 // for an outline, and more than the caps alone.
-std::optional<AxisChoice> choose_axis(const std::vector<const DetectedPlane*>& faces,
-                                      const config::SolveConfig& cfg) {
+std::optional<AxisChoice> choose_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
+  const config::SolveConfig& cfg = in.cfg;
   const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
   const double cos_parallel = std::cos(cfg.parallel_degrees * kPi / 180.0);
   std::vector<Eigen::Vector3d> hypotheses;
@@ -63,7 +82,9 @@ std::optional<AxisChoice> choose_axis(const std::vector<const DetectedPlane*>& f
       c.points += f->inliers.size();
     }
     if (c.sides.size() < 3) continue;
-    if (!best || c.points > best->points) best = std::move(c);
+    if (!best || c.points > best->points) {
+      if (caps_at_ends(in, c)) best = std::move(c);
+    }
   }
   return best;
 }
@@ -281,9 +302,28 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
       r.d = outward.dot(a);
       line = r;
     }
+    line->seen = false;
     line->t_lo = a.dot(line->tangent());
     line->t_hi = b.dot(line->tangent());
     ring.push_back(*line);
+  }
+  // The grid rounds corners into short edges of their own: a side no face shows that is shorter
+  // than a few cells between its neighbours is such a cut, and its neighbours meet instead.
+  for (bool cut = true; cut && ring.size() > 3;) {
+    cut = false;
+    std::size_t shortest = ring.size();
+    double shortest_len = 3.0 * cell;
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      if (ring[k].seen) continue;
+      const auto a = intersect(ring[(k + ring.size() - 1) % ring.size()], ring[k]);
+      const auto b = intersect(ring[k], ring[(k + 1) % ring.size()]);
+      const double len = a && b ? (*b - *a).norm() : 0.0;
+      if (len < shortest_len) shortest = k, shortest_len = len;
+    }
+    if (shortest < ring.size()) {
+      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(shortest));
+      cut = true;
+    }
   }
   return ring;
 }
@@ -292,7 +332,7 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
 
 std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
-  const auto choice = choose_axis(faces, in.cfg);
+  const auto choice = choose_axis(in, faces);
   if (!choice) return std::nullopt;
   const Eigen::Vector3d axis = refine_axis(*choice);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
@@ -306,7 +346,13 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
     for (const SideRun& r : side_runs(in, *f, u, v, cap_points)) runs.push_back(r);
   // Every side seen: the sides' own stretches, ordered around. Else a cap's outline, with the
   // sides seen where they are (a single view); at least one side besides the cap.
-  auto chained = chain_runs(runs, in.cfg.prism_corner_gap * in.resolution);
+  // Noise cuts small planes out of the edges between sides: the smallest runs are left out one
+  // by one until the rest close the outline.
+  std::sort(runs.begin(), runs.end(), [](const SideRun& a, const SideRun& b) { return a.weight > b.weight; });
+  std::optional<std::vector<SideRun>> chained;
+  for (std::size_t m = runs.size(); m >= 3 && !chained; --m)
+    chained = chain_runs(std::vector<SideRun>(runs.begin(), runs.begin() + static_cast<std::ptrdiff_t>(m)),
+                         in.cfg.prism_corner_gap * in.resolution);
   bool from_cap = false;
   if (!chained && !choice->caps.empty()) {
     std::size_t matched = 0;
