@@ -107,14 +107,21 @@ Eigen::Vector3d refine_axis(const AxisChoice& c) {
 // from the cloud's centroid) stands, which is right for every convex outline.
 std::vector<SideRun> side_runs(const SolveInput& in, const DetectedPlane& face,
                                const Eigen::Vector3d& u, const Eigen::Vector3d& v,
-                               const std::vector<Eigen::Vector2d>& cap_points) {
+                               const std::vector<Eigen::Vector2d>& cap_points,
+                               const std::vector<const DetectedPlane*>& caps) {
   Eigen::Vector2d n(face.plane.normal.dot(u), face.plane.normal.dot(v));
   if (!(n.norm() > 0.0)) return {};
   n.normalize();
   std::vector<Eigen::Vector2d> pts;
   pts.reserve(face.inliers.size());
   double d = 0.0;
+  // A side's plane runs on across a cap at a concave corner (an L's inner faces), and its band
+  // takes the cap's points there: points at a cap's height are left to the cap.
+  const double cap_band = 2.0 * in.cfg.inlier_distance * in.resolution;
   for (std::uint32_t i : face.inliers) {
+    bool on_cap = false;
+    for (const DetectedPlane* c : caps) on_cap = on_cap || std::abs(c->plane.signed_distance(in.cloud[i])) < cap_band;
+    if (on_cap) continue;
     pts.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
     d += pts.back().dot(n);
   }
@@ -159,33 +166,31 @@ std::vector<SideRun> side_runs(const SolveInput& in, const DetectedPlane& face,
   return runs;
 }
 
-// Orders the runs around the outline: each run's end meets the nearest start of another.
-// Only a single cycle through every run, each corner closer than the gap allowed, is an outline.
-std::optional<std::vector<SideRun>> chain_runs(const std::vector<SideRun>& runs, double max_gap) {
-  const std::size_t n = runs.size();
-  if (n < 3) return std::nullopt;
-  std::vector<std::size_t> next(n, n);
-  std::vector<int> incoming(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n; ++j) {
-      if (j == i) continue;
-      const double g = (runs[i].end() - runs[j].start()).norm();
-      if (g < best) best = g, next[i] = j;
-    }
-    if (best > max_gap) return std::nullopt;
-    ++incoming[next[i]];
-  }
-  for (int c : incoming)
-    if (c != 1) return std::nullopt;
-  std::vector<SideRun> ordered;
+// Orders the runs around the outline: from the largest, each run's end goes on to the nearest
+// start of a run not yet taken, until that is the first run's again. Runs off the walk (planes
+// noise cuts from the edges between sides) are left out; only a closed walk, every corner
+// closer than the gap allowed, is an outline.
+std::optional<std::vector<SideRun>> chain_runs(std::vector<SideRun> runs, double max_gap) {
+  if (runs.size() < 3) return std::nullopt;
+  std::sort(runs.begin(), runs.end(), [](const SideRun& a, const SideRun& b) { return a.weight > b.weight; });
+  std::vector<bool> taken(runs.size(), false);
+  std::vector<SideRun> ordered{runs[0]};
+  taken[0] = true;
   std::size_t at = 0;
-  for (std::size_t k = 0; k < n; ++k) {
-    ordered.push_back(runs[at]);
-    at = next[at];
-    if (at == 0 && k + 1 < n) return std::nullopt;  // more than one cycle
+  for (;;) {
+    std::size_t next = runs.size();
+    double best = max_gap;
+    for (std::size_t j = 0; j < runs.size(); ++j) {
+      if (j == at || (taken[j] && !(j == 0 && ordered.size() >= 3))) continue;
+      const double g = (runs[at].end() - runs[j].start()).norm();
+      if (g <= best) best = g, next = j;
+    }
+    if (next == runs.size()) return std::nullopt;
+    if (next == 0) return ordered;
+    taken[next] = true;
+    ordered.push_back(runs[next]);
+    at = next;
   }
-  return ordered;
 }
 
 // Consecutive runs along one line (a side RANSAC cut in two) become one side.
@@ -282,6 +287,9 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
     const SideRun* best = nullptr;
     for (const SideRun& r : runs) {
       if (r.n.dot(outward) < cos_parallel || std::abs(r.d - r.n.dot(0.5 * (a + b))) > 2.0 * cell) continue;
+      // Coplanar sides share a line: the run must lie along this edge, not another on it.
+      const double ta = a.dot(r.tangent()), tb = b.dot(r.tangent());
+      if (std::min(r.t_hi, std::max(ta, tb)) - std::max(r.t_lo, std::min(ta, tb)) < 0.5 * len) continue;
       if (!best || r.weight > best->weight) best = &r;
     }
     if (best) {
@@ -343,16 +351,10 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
     for (std::uint32_t i : f->inliers) cap_points.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
   std::vector<SideRun> runs;
   for (const DetectedPlane* f : choice->sides)
-    for (const SideRun& r : side_runs(in, *f, u, v, cap_points)) runs.push_back(r);
+    for (const SideRun& r : side_runs(in, *f, u, v, cap_points, choice->caps)) runs.push_back(r);
   // Every side seen: the sides' own stretches, ordered around. Else a cap's outline, with the
   // sides seen where they are (a single view); at least one side besides the cap.
-  // Noise cuts small planes out of the edges between sides: the smallest runs are left out one
-  // by one until the rest close the outline.
-  std::sort(runs.begin(), runs.end(), [](const SideRun& a, const SideRun& b) { return a.weight > b.weight; });
-  std::optional<std::vector<SideRun>> chained;
-  for (std::size_t m = runs.size(); m >= 3 && !chained; --m)
-    chained = chain_runs(std::vector<SideRun>(runs.begin(), runs.begin() + static_cast<std::ptrdiff_t>(m)),
-                         in.cfg.prism_corner_gap * in.resolution);
+  auto chained = chain_runs(runs, in.cfg.prism_corner_gap * in.resolution);
   bool from_cap = false;
   if (!chained && !choice->caps.empty()) {
     std::size_t matched = 0;
