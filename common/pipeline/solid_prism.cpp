@@ -194,13 +194,16 @@ std::optional<std::vector<SideRun>> chain_runs(std::vector<SideRun> runs, double
 }
 
 // Consecutive runs along one line (a side RANSAC cut in two) become one side.
-std::vector<SideRun> merge_collinear(std::vector<SideRun> ring, double cos_parallel, double band) {
+// A side only a cap's border shows is placed less exactly: `loose_band` for it.
+std::vector<SideRun> merge_collinear(std::vector<SideRun> ring, double cos_parallel, double band,
+                                     double loose_band) {
   bool merged = true;
   while (merged && ring.size() > 3) {
     merged = false;
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t j = (i + 1) % ring.size();
-      if (ring[i].n.dot(ring[j].n) < cos_parallel || std::abs(ring[i].d - ring[j].d) > band) continue;
+      const double allowed = ring[i].seen && ring[j].seen ? band : loose_band;
+      if (ring[i].n.dot(ring[j].n) < cos_parallel || std::abs(ring[i].d - ring[j].d) > allowed) continue;
       SideRun m = ring[i];
       const double w = ring[i].weight + ring[j].weight;
       m.n = (ring[i].weight * ring[i].n + ring[j].weight * ring[j].n).normalized();
@@ -208,6 +211,7 @@ std::vector<SideRun> merge_collinear(std::vector<SideRun> ring, double cos_paral
       m.t_lo = ring[i].start().dot(m.tangent());
       m.t_hi = ring[j].end().dot(m.tangent());
       m.weight = w;
+      m.seen = ring[i].seen || ring[j].seen;
       ring[i] = m;
       ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(j));
       merged = true;
@@ -365,7 +369,8 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   if (!chained) return std::nullopt;
   const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
   const double band = in.cfg.inlier_distance * in.resolution;
-  const std::vector<SideRun> ring = merge_collinear(*chained, cos_parallel, band);
+  const std::vector<SideRun> ring =
+      merge_collinear(*chained, cos_parallel, band, std::max(band, 1.5 * in.cfg.prism_outline_cell * in.resolution));
 
   geometry::Polygon2 polygon;
   for (std::size_t i = 0; i < ring.size(); ++i) {
