@@ -8,6 +8,7 @@
 #include <limits>
 #include <tuple>
 
+#include "geometry/convex_hull.hpp"
 #include "geometry/polygon.hpp"
 #include "pipeline/prism_outline.hpp"
 #include "pipeline/solids.hpp"
@@ -25,6 +26,7 @@ struct SideRun {
   double t_lo = 0.0, t_hi = 0.0;
   double weight = 0.0;  // points behind the line
   bool seen = true;     // a side face's; false for a side only a cap's border shows
+  double hull_area = 0.0;  // of its points in the plane of the side and the axis
   Eigen::Vector2d tangent() const { return {-n.y(), n.x()}; }
   Eigen::Vector2d start() const { return d * n + t_lo * tangent(); }
   Eigen::Vector2d end() const { return d * n + t_hi * tangent(); }
@@ -113,6 +115,7 @@ std::vector<SideRun> side_runs(const SolveInput& in, const DetectedPlane& face,
   if (!(n.norm() > 0.0)) return {};
   n.normalize();
   std::vector<Eigen::Vector2d> pts;
+  std::vector<double> heights;
   pts.reserve(face.inliers.size());
   double d = 0.0;
   // A side's plane runs on across a cap at a concave corner (an L's inner faces), and its band
@@ -123,13 +126,18 @@ std::vector<SideRun> side_runs(const SolveInput& in, const DetectedPlane& face,
     for (const DetectedPlane* c : caps) on_cap = on_cap || std::abs(c->plane.signed_distance(in.cloud[i])) < cap_band;
     if (on_cap) continue;
     pts.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
+    heights.push_back(in.cloud[i].dot(u.cross(v)));
     d += pts.back().dot(n);
   }
   d /= static_cast<double>(std::max<std::size_t>(1, pts.size()));
   const Eigen::Vector2d tangent(-n.y(), n.x());
+  // (along the side, along the axis) of each point: the runs split on the first, their
+  // rectangles are checked on both.
+  std::vector<Eigen::Vector2d> ta;
+  for (std::size_t k = 0; k < pts.size(); ++k) ta.emplace_back(pts[k].dot(tangent), heights[k]);
+  std::sort(ta.begin(), ta.end(), [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() < b.x(); });
   std::vector<double> t;
-  for (const auto& p : pts) t.push_back(p.dot(tangent));
-  std::sort(t.begin(), t.end());
+  for (const auto& p : ta) t.push_back(p.x());
   const double gap = in.cfg.prism_run_gap * in.resolution;
   const std::size_t min_points = std::max<std::size_t>(8, face.inliers.size() / 50);
   std::vector<SideRun> runs;
@@ -143,6 +151,8 @@ std::vector<SideRun> side_runs(const SolveInput& in, const DetectedPlane& face,
       r.t_lo = t[first];
       r.t_hi = t[k - 1];
       r.weight = static_cast<double>(k - first);
+      r.hull_area = std::abs(geometry::signed_area(geometry::convex_hull_2d(
+          std::vector<Eigen::Vector2d>(ta.begin() + static_cast<std::ptrdiff_t>(first), ta.begin() + static_cast<std::ptrdiff_t>(k)))));
       runs.push_back(r);
     }
     first = k;
@@ -428,6 +438,11 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   if (!std::isnan(cap_hi)) hi = cap_hi;
   const double height = hi - lo;
   if (!(height > 0.0)) return std::nullopt;
+
+  // A prism's sides are rectangles the height of the prism: an octahedron's or a pyramid's
+  // triangles, lined up around some axis, fill half of theirs.
+  for (const SideRun& r : ring)
+    if (r.seen && r.hull_area < in.cfg.box_face_fill * (r.t_hi - r.t_lo) * height) return std::nullopt;
 
   const Eigen::Vector2d centroid = geometry::area_centroid(polygon);
   for (auto& p : polygon) p -= centroid;
