@@ -4,9 +4,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "geometry/convex_hull.hpp"
 #include "geometry/pca.hpp"
-#include "geometry/polygon.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -35,26 +33,6 @@ Eigen::Matrix3d refine_frame(const Eigen::Matrix3d& frame,
     r = u * svd.matrixV().transpose();
   }
   return r.allFinite() ? r : frame;
-}
-
-// Share of a box face's rectangle that the convex hull of the points of the planes lying on it
-// covers. A box's seen faces are whole rectangles, up to a sensor's holes (which the hull
-// bridges) and what stands in front; an octahedron's faces, which can meet at right angles, are
-// triangles: half the rectangle around them. Unseen faces are not asked (1).
-double face_fill(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
-                 const Eigen::Vector3d& normal, double position, const Eigen::Vector3d& a, double a_lo,
-                 double a_hi, const Eigen::Vector3d& b, double b_lo, double b_hi, double cos_parallel) {
-  const double band = std::max(in.cfg.cap_band * in.resolution, in.cfg.face_slab * std::max(a_hi - a_lo, b_hi - b_lo));
-  std::vector<Eigen::Vector2d> points;
-  for (const DetectedPlane* f : faces) {
-    if (f->plane.normal.dot(normal) < cos_parallel) continue;
-    if (std::abs(detail::face_position(in.cloud, *f, normal) - position) > band) continue;
-    for (std::uint32_t i : f->inliers) points.emplace_back(in.cloud[i].dot(a), in.cloud[i].dot(b));
-  }
-  if (points.size() < 3) return 1.0;
-  const double area = std::abs(geometry::signed_area(geometry::convex_hull_2d(std::move(points))));
-  const double rectangle = (a_hi - a_lo) * (b_hi - b_lo);
-  return rectangle > 0.0 ? area / rectangle : 1.0;
 }
 
 }  // namespace
@@ -109,16 +87,6 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
     const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
     std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi,
                                                           in.cfg.open_end_quantile);
-  }
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3, j = (k + 2) % 3;
-    for (int side = 0; side < 2; ++side) {
-      const Eigen::Vector3d normal = side ? Eigen::Vector3d(frame.col(k)) : Eigen::Vector3d(-frame.col(k));
-      const double position = side ? hi[k] : -lo[k];
-      if (face_fill(in, faces, normal, position, frame.col(i), lo[i], hi[i], frame.col(j), lo[j], hi[j],
-                    cos_parallel) < in.cfg.box_face_fill)
-        return std::nullopt;
-    }
   }
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });

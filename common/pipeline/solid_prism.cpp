@@ -442,7 +442,7 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   // A prism's sides are rectangles the height of the prism: an octahedron's or a pyramid's
   // triangles, lined up around some axis, fill half of theirs.
   for (const SideRun& r : ring)
-    if (r.seen && r.hull_area < in.cfg.box_face_fill * (r.t_hi - r.t_lo) * height) return std::nullopt;
+    if (r.seen && r.hull_area < in.cfg.prism_side_fill * (r.t_hi - r.t_lo) * height) return std::nullopt;
 
   const Eigen::Vector2d centroid = geometry::area_centroid(polygon);
   for (auto& p : polygon) p -= centroid;
