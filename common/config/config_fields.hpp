@@ -133,6 +133,11 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("frustum_min_taper", c.frustum_min_taper);
   f("frustum_min_top_share", c.frustum_min_top_share);
   f("regular_tolerance", c.regular_tolerance);
+  f("prism_side_fill", c.prism_side_fill);
+  f("prism_run_gap", c.prism_run_gap);
+  f("prism_corner_gap", c.prism_corner_gap);
+  f("prism_outline_cell", c.prism_outline_cell);
+  f("prism_min_turn_degrees", c.prism_min_turn_degrees);
 }
 
 template <class F>

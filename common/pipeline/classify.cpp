@@ -177,7 +177,8 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
   if (out.cap_plane) {
     // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
     out.shape = Shape::cylinder;
-    out.candidates = {Shape::cylinder, Shape::cone, Shape::frustum};
+    // A regular polygon's cap reads as a circle too (a hexagonal nut): the prism stays in.
+    out.candidates = {Shape::cylinder, Shape::cone, Shape::frustum, Shape::prism};
     return out;
   }
   add_unique(out.candidates, out.shape);
@@ -193,6 +194,8 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
                          out.candidates.end());
     if (out.shape == Shape::cylinder || out.shape == Shape::cone) out.shape = out.candidates.front();
   }
+  // Any other prism comes last: the six keep every tie.
+  add_unique(out.candidates, Shape::prism);
   return out;
 }
 

@@ -29,7 +29,7 @@ std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {
     case Shape::cone: return fit_cone(in);
     case Shape::sphere: return fit_sphere_solid(in);
     case Shape::frustum: return fit_frustum(in);
-    case Shape::prism: break;
+    case Shape::prism: return fit_prism(in);
     case Shape::unknown: break;
   }
   return std::nullopt;

@@ -1,5 +1,5 @@
-// Regular tetrahedron from two, three or four of its faces: the seen faces fix its
-// orientation, their planes and where the points end on the hidden side fix the rest.
+// Tetrahedron from its faces: any tetrahedron from its four (a whole cloud), a regular one also
+// from two or three (a single view: 70.5 deg fixes the rest, the points' ends the hidden faces).
 #include <Eigen/Dense>
 #include <algorithm>
 #include <array>
@@ -169,6 +169,22 @@ std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
   return vertices;
 }
 
+// Any tetrahedron seen whole: its four largest faces, pairwise far from parallel, bound it when
+// each one's plane leaves the opposite corner inside.
+std::optional<std::array<Point, 4>> from_largest_faces(const std::vector<const DetectedPlane*>& faces,
+                                                       double cos_parallel) {
+  if (faces.size() < 4) return std::nullopt;
+  const std::vector<const DetectedPlane*> four(faces.begin(), faces.begin() + 4);
+  for (std::size_t a = 0; a < 4; ++a)
+    for (std::size_t b = a + 1; b < 4; ++b)
+      if (std::abs(four[a]->plane.normal.dot(four[b]->plane.normal)) > cos_parallel) return std::nullopt;
+  const auto vertices = from_four_faces(four);
+  if (!vertices) return std::nullopt;
+  for (int f = 0; f < 4; ++f)
+    if (!(four[f]->plane.signed_distance((*vertices)[f]) < 0.0)) return std::nullopt;
+  return vertices;
+}
+
 }  // namespace
 
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
@@ -177,7 +193,9 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   const auto seen = tetrahedron_faces(faces, tolerance);
   std::optional<std::array<Point, 4>> vertices;
   if (seen.size() == 4) vertices = from_four_faces(seen);
-  else if (seen.size() >= 2) vertices = from_seen_faces(in, seen);
+  // An irregular one meets at other angles: its four faces, when the cloud shows them all.
+  if (!vertices) vertices = from_largest_faces(faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
+  if (!vertices && seen.size() >= 2) vertices = from_seen_faces(in, seen);
   if (!vertices) return std::nullopt;
   std::vector<Eigen::Vector3d> normals;
   for (const geometry::Plane& p : face_planes(*vertices)) normals.push_back(p.normal);

@@ -66,6 +66,9 @@ struct FittedSolid {
 std::optional<FittedSolid> fit_box(const SolveInput& in);
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in);
 std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in);
+// A right prism of any other simple cross-section (a rectangle stays a box, a regular pentagon
+// a pentagonal prism): every side face seen, ordered around the outline by where they meet.
+std::optional<FittedSolid> fit_prism(const SolveInput& in);
 std::optional<FittedSolid> fit_cylinder(const SolveInput& in);
 // The cylinder with its axis from the surface normals alone, ignoring every flat face: the
 // second chance when no solid explains the points, since a curved side seen from one side can

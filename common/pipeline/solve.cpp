@@ -60,7 +60,7 @@ double sector_coverage(const PointList& cloud, const Point& center, const Eigen:
 bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio) {
   if (!s.center.allFinite() || !s.axes.allFinite()) return false;
   for (const auto& [name, value] : s.dimensions)
-    if (!(value > 0.0) || !std::isfinite(value) || value > max_size_ratio * cloud_diameter)
+    if (name != "sides" && (!(value > 0.0) || !std::isfinite(value) || value > max_size_ratio * cloud_diameter))
       return false;
   return true;
 }

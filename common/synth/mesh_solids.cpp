@@ -35,6 +35,29 @@ SolidMesh frustum_mesh(double radius, double top_radius, double height, const Po
   return m;
 }
 
+SolidMesh prism_mesh(const geometry::Polygon2& polygon, double height, const Pose& pose) {
+  SolidMesh m;
+  const auto n = static_cast<std::uint32_t>(polygon.size());
+  for (double x : {-0.5 * height, 0.5 * height})
+    for (const auto& p : polygon) m.vertices.push_back(pose.to_world({x, p.x(), p.y()}));
+  for (const auto& t : geometry::triangulate(polygon)) {
+    const auto a = static_cast<std::uint32_t>(t[0]), b = static_cast<std::uint32_t>(t[1]), c = static_cast<std::uint32_t>(t[2]);
+    m.triangles.push_back({n + a, n + b, n + c});
+    m.triangles.push_back({a, c, b});
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t j = (i + 1) % n;
+    m.triangles.push_back({i, j, n + j});
+    m.triangles.push_back({i, n + j, n + i});
+  }
+  double extent = 0.0;
+  for (const auto& a : polygon)
+    for (const auto& b : polygon) extent = std::max(extent, (a - b).norm());
+  m.center = pose.center;
+  m.size = std::max(extent, height);
+  return m;
+}
+
 SolidMesh tetrahedron_mesh(const std::array<Eigen::Vector3d, 4>& corners) {
   SolidMesh m;
   m.vertices.assign(corners.begin(), corners.end());

@@ -7,6 +7,8 @@
 #include <limits>
 #include <tuple>
 
+#include "geometry/polygon.hpp"
+
 namespace cloudshape::bench {
 
 namespace {
@@ -43,8 +45,26 @@ std::vector<int> match_results(const TestCloud& cloud, const pipeline::Recogniti
   return result_of;
 }
 
+bool same_shape(const Truth& truth, const pipeline::ObjectResult& result) {
+  if (result.shape != truth.shape) return false;
+  if (truth.polygon.empty()) return true;
+  return result.polygon.size() == truth.polygon.size();
+}
+
 std::vector<double> dimension_errors(const Truth& truth, const pipeline::ObjectResult& result) {
   std::vector<double> errors;
+  if (!truth.polygon.empty()) {
+    const auto rel = [](double got, double want) { return std::abs(got - want) / want; };
+    for (const auto& [name, got] : result.dimensions)
+      for (const auto& [want_name, want] : truth.dimensions)
+        if (name == "height" && want_name == "height") errors.push_back(rel(got, want));
+    if (result.polygon.size() >= 3) {
+      errors.push_back(rel(std::sqrt(std::abs(geometry::signed_area(result.polygon))),
+                           std::sqrt(std::abs(geometry::signed_area(truth.polygon)))));
+      errors.push_back(rel(geometry::perimeter(result.polygon), geometry::perimeter(truth.polygon)));
+    }
+    return errors;
+  }
   for (const auto& [name, value] : truth.dimensions) {
     for (const auto& [got_name, got] : result.dimensions) {
       if (got_name == name) errors.push_back(std::abs(got - value) / value);
@@ -71,8 +91,10 @@ void score_cloud(const TestCloud& cloud, const pipeline::RecognitionResult& r,
     ++tally.matched;
     if (got.shape != "unknown") ++tally.shaped;
     if (got.partial) ++tally.partial;
-    if (got.shape != truth.shape) {
-      ++tally.wrong_as[got.shape];
+    if (!same_shape(truth, got)) {
+      ++tally.wrong_as[got.shape == "prism" && got.shape == truth.shape
+                           ? "prism of " + std::to_string(got.polygon.size()) + " sides"
+                           : got.shape];
       continue;
     }
     ++tally.right;

@@ -30,6 +30,9 @@ struct Truth {
   bool has_pose = true;
   std::vector<AxisCheck> axis_checks;
   double size = 1.0;  // characteristic size: the unit of centre error and of the match gate
+  // prism only: the cross-section (any frame). Right needs the result's `sides` equal to its
+  // corners; the dimension errors are the height's, the square root of the area's, the perimeter's.
+  std::vector<Eigen::Vector2d> polygon;
 };
 
 struct TestCloud {
@@ -68,7 +71,11 @@ void score_cloud(const TestCloud& cloud, const pipeline::RecognitionResult& r,
 // The union of several tallies (the "all" row).
 Tally merge(const std::map<std::string, Tally>& tallies);
 
-// Relative error of each truth dimension the result also reports, by name.
+// Relative error of each truth dimension the result also reports, by name (a prism: height,
+// sqrt(area) and perimeter of its polygon).
 std::vector<double> dimension_errors(const Truth& truth, const pipeline::ObjectResult& result);
+
+// The result's shape is the truth's, and a prism's corner count too.
+bool same_shape(const Truth& truth, const pipeline::ObjectResult& result);
 
 }  // namespace cloudshape::bench

@@ -3,6 +3,7 @@
 #include "accuracy_suites.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -11,8 +12,12 @@
 #include "accuracy_real.hpp"
 #include "synth/mesh_sampling.hpp"
 #include "synth/mesh_solids.hpp"
+#include "synth/mesh_visibility.hpp"
+#include "synth/visibility.hpp"
 #include "synth/negative_solid.hpp"
 #include "synth/pose.hpp"
+#include "synth/prism_section.hpp"
+#include "geometry/polygon.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/resting_pose.hpp"
 #include "synth/sample_solid.hpp"
@@ -28,6 +33,7 @@ using synth::SolidSpec;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kMinPoints = 2000.0;
 constexpr double kMaxPoints = 200000.0;
+constexpr std::size_t kNewShapeKinds = 3;  // frustum, prism, tetrahedron (the shape index of their streams)
 
 std::uint64_t splitmix(std::uint64_t x) {
   x += 0x9E3779B97F4A7C15ull;
@@ -236,6 +242,22 @@ PointList noisy_mesh_points(const synth::SolidMesh& mesh, std::mt19937_64& rng, 
   return points;
 }
 
+// new_shapes: the whole surface; new_shapes_view: what a camera 3 sizes from the centre, in a
+// direction uniform over the sphere, sees (exact ray casting on the mesh). Noise 0.5% of size.
+PointList new_shape_points(const synth::SolidMesh& mesh, std::mt19937_64& rng, const SuiteOptions& o, bool view) {
+  if (!view) return noisy_mesh_points(mesh, rng, o);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  const Eigen::Vector3d dir = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
+  const Eigen::Vector3d camera = mesh.center + 3.0 * mesh.size * dir;
+  const synth::MeshVisibility visibility(mesh.vertices, mesh.triangles);
+  PointList points = synth::sample_visible(
+      [&](std::size_t m) { return synth::sample_mesh_surface(mesh.vertices, mesh.triangles, m, rng); },
+      [&](const PointList& c) { return visibility.visible(c, camera); }, random_point_count(rng, o.max_points), rng);
+  std::normal_distribution<double> noise(0.0, 0.005 * mesh.size);
+  for (Point& p : points) p += Eigen::Vector3d(noise(rng), noise(rng), noise(rng));
+  return points;
+}
+
 // A solid outside the vocabulary, its whole surface, noise sigma 0.5% of its size. Its truth
 // is `unknown`, labelled with its kind; it has no pose to score.
 TestCloud negative_cloud(std::size_t kind, std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o) {
@@ -258,7 +280,7 @@ TestCloud negative_cloud(std::size_t kind, std::size_t i, std::uint64_t cloud_se
 
 // The shapes beyond the six (a frustum: radius and height log-uniform within 1:4, the top 25-80%
 // of the base), whole surface, noise sigma 0.5% of size.
-TestCloud new_shape_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o) {
+TestCloud frustum_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o, bool view) {
   std::mt19937_64 rng(cloud_seed);
   const double height_over_radius = log_uniform(rng, 0.5, 4.0);
   const double radius = o.solid_size / std::max(2.0, height_over_radius);
@@ -266,7 +288,7 @@ TestCloud new_shape_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOp
   const synth::Pose pose = synth::random_pose(rng, o.solid_size);
   const synth::SolidMesh mesh = synth::frustum_mesh(radius, top, radius * height_over_radius, pose);
   TestCloud cloud;
-  cloud.points = noisy_mesh_points(mesh, rng, o);
+  cloud.points = new_shape_points(mesh, rng, o, view);
   Truth t;
   t.shape = "frustum";
   t.dimensions = {{"radius", radius}, {"top_radius", top}, {"height", radius * height_over_radius}};
@@ -279,12 +301,90 @@ TestCloud new_shape_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOp
   return cloud;
 }
 
+// A right prism: the cross-section kinds in turn (triangle, rhombus, regular and irregular
+// hexagon, convex n-gon, L, T, plus, star), height over width log-uniform within 1:3..3:1.
+TestCloud prism_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o, bool view) {
+  std::mt19937_64 rng(cloud_seed);
+  const auto& kinds = synth::all_section_kinds();
+  const synth::PrismSection section = synth::random_section(kinds[i % kinds.size()], rng);
+  const double height_over_width = log_uniform(rng, 1.0 / 3.0, 3.0);
+  const double width = o.solid_size / std::max(1.0, height_over_width);
+  geometry::Polygon2 polygon = section.polygon;
+  for (auto& p : polygon) p *= width;
+  const synth::Pose pose = synth::random_pose(rng, o.solid_size);
+  const synth::SolidMesh mesh = synth::prism_mesh(polygon, width * height_over_width, pose);
+  TestCloud cloud;
+  cloud.points = new_shape_points(mesh, rng, o, view);
+  Truth t;
+  t.shape = "prism";
+  t.label = synth::to_string(section.kind);
+  t.dimensions = {{"height", width * height_over_width}, {"sides", static_cast<double>(polygon.size())}};
+  if (section.regular) t.dimensions.emplace_back("side", geometry::perimeter(polygon) / polygon.size());
+  t.polygon = polygon;
+  t.center = pose.center;
+  t.axes = pose.axes;
+  t.size = mesh.size;
+  t.axis_checks = {{0, false}};
+  cloud.truths.push_back(t);
+  cloud.source = "new_shapes-prism-" + t.label + "-" + std::to_string(i);
+  cloud.note = t.label;
+  return cloud;
+}
+
+// Any tetrahedron: four corners uniform in a ball, kept when no edge is under 40% of the longest
+// and the volume is at least 30% of a regular one's with that edge (no sliver, no needle).
+TestCloud tetrahedron_cloud(std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o, bool view) {
+  std::mt19937_64 rng(cloud_seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::array<Eigen::Vector3d, 4> c;
+  double longest = 0.0, shortest = 0.0, mean = 0.0;
+  for (;;) {
+    for (auto& v : c) {
+      do v = Eigen::Vector3d(u(rng), u(rng), u(rng));
+      while (v.norm() > 1.0);
+    }
+    longest = 0.0, shortest = 1e9, mean = 0.0;
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        const double e = (c[a] - c[b]).norm();
+        longest = std::max(longest, e), shortest = std::min(shortest, e), mean += e / 6.0;
+      }
+    const double volume = std::abs((c[1] - c[0]).dot((c[2] - c[0]).cross(c[3] - c[0]))) / 6.0;
+    const double regular_volume = longest * longest * longest / (6.0 * std::sqrt(2.0));
+    if (shortest >= 0.4 * longest && volume >= 0.3 * regular_volume) break;
+  }
+  const synth::Pose pose = synth::random_pose(rng, o.solid_size);
+  for (auto& v : c) v = pose.center + (o.solid_size / longest) * v;
+  const synth::SolidMesh mesh = synth::tetrahedron_mesh(c);
+  TestCloud cloud;
+  cloud.points = new_shape_points(mesh, rng, o, view);
+  Truth t;
+  t.shape = "tetrahedron";
+  t.label = "irregular";
+  t.dimensions = {{"edge", mean * o.solid_size / longest}};
+  t.center = mesh.center;
+  t.size = mesh.size;
+  cloud.truths.push_back(t);
+  cloud.source = "new_shapes-tetrahedron-" + std::to_string(i);
+  cloud.note = "irregular";
+  return cloud;
+}
+
+TestCloud new_shape_cloud(std::size_t kind, std::size_t i, std::uint64_t cloud_seed, const SuiteOptions& o,
+                          bool view) {
+  TestCloud cloud = kind == 1 ? prism_cloud(i, cloud_seed, o, view)
+                    : kind == 2 ? tetrahedron_cloud(i, cloud_seed, o, view)
+                                : frustum_cloud(i, cloud_seed, o, view);
+  if (view) cloud.source.replace(0, std::string("new_shapes").size(), "new_shapes_view");
+  return cloud;
+}
+
 }  // namespace
 
 const std::vector<std::string>& accuracy_conditions() {
   static const std::vector<std::string> names = {
       "clean", "noise", "outliers", "density", "single_view", "table_view", "multi", "real", "negatives",
-      "new_shapes"};
+      "new_shapes", "new_shapes_view"};
   return names;
 }
 
@@ -309,7 +409,12 @@ std::string describe_condition(const std::string& c) {
     return "solids none of the shapes (ellipsoid, torus, square pyramid, octahedron), whole, "
            "noise sigma 0.5% of size; right = unknown";
   if (c == "new_shapes")
-    return "shapes beyond the six (frustum), complete surface, noise sigma 0.5% of size";
+    return "shapes beyond the six (frustum; prism: triangle, rhombus, hexagons, convex n-gon, L, T, plus, "
+           "star; any tetrahedron), complete surface, noise sigma 0.5% of size; a prism is right with "
+           "its sides, its dimensions: height, sqrt(area), perimeter";
+  if (c == "new_shapes_view")
+    return "the new shapes of new_shapes, each seen by one camera 3 sizes away (any direction, exact "
+           "ray casting), noise sigma 0.5% of size; truth = the whole solid";
   return {};
 }
 
@@ -317,7 +422,8 @@ std::size_t suite_size(const std::string& condition, const SuiteOptions& o) {
   if (condition == "real") return present_real_samples(o.shared_data_dir).size();
   if (condition == "negatives")
     return static_cast<std::size_t>(std::max(o.count, 0)) * synth::all_negative_kinds().size();
-  if (condition == "new_shapes") return static_cast<std::size_t>(std::max(o.count, 0));
+  if (condition == "new_shapes" || condition == "new_shapes_view")
+    return static_cast<std::size_t>(std::max(o.count, 0)) * kNewShapeKinds;
   return static_cast<std::size_t>(std::max(o.count, 0)) * synth::all_shape_kinds().size();
 }
 
@@ -330,12 +436,13 @@ TestCloud make_test_cloud(const std::string& condition, std::size_t index, const
   // moves no existing cloud.
   static const std::vector<std::string> stream_order = {
       "clean", "noise", "outliers", "single_view", "multi", "real", "table_view", "density", "negatives",
-      "new_shapes"};
+      "new_shapes", "new_shapes_view"};
   const auto pos = std::find(stream_order.begin(), stream_order.end(), condition);
   if (pos == stream_order.end()) throw std::invalid_argument("unknown condition '" + condition + "'");
   const std::uint64_t cloud_seed = stream(o.seed, 2 + (pos - stream_order.begin()), shape, i);
   if (condition == "negatives") return negative_cloud(shape, i, cloud_seed, o);
-  if (condition == "new_shapes") return new_shape_cloud(i, cloud_seed, o);
+  if (condition == "new_shapes" || condition == "new_shapes_view")
+    return new_shape_cloud(shape, i, cloud_seed, o, condition == "new_shapes_view");
   const std::string source =
       condition + "-" + synth::to_string(synth::all_shape_kinds()[shape]) + "-" + std::to_string(i);
 

@@ -152,7 +152,7 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--accuracy", accuracy,
                "measure recognition accuracy instead of timings (clean, noise, outliers, "
-               "density, single_view, table_view, multi, real, negatives, new_shapes)");
+               "density, single_view, table_view, multi, real, negatives, new_shapes, new_shapes_view)");
   app.add_option("--count", count, "--accuracy: clouds per shape per condition")
       ->capture_default_str();
   app.add_option("--max-points", max_points,
@@ -160,7 +160,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   app.add_option("--conditions", conditions_arg,
                  "--accuracy: comma-separated subset of "
-                 "clean,noise,outliers,density,single_view,table_view,multi,real,negatives,new_shapes");
+                 "clean,noise,outliers,density,single_view,table_view,multi,real,negatives,new_shapes,new_shapes_view");
   app.add_flag("--per-cloud", per_cloud,
                "--accuracy: one line per cloud on stderr (truths, results, how it was made)");
   app.add_option("--save-clouds", save_dir,

@@ -1,4 +1,4 @@
-// `shape` for the shapes the analytic sampler does not know (frustum): sampled on a fine mesh,
+// `shape` for the shapes the analytic sampler does not know (frustum, prism): sampled on a fine mesh,
 // seen exactly by ray casting, with the same ground-truth JSON as the other shapes.
 #pragma once
 
@@ -12,8 +12,9 @@
 namespace cloudshape::synth_tool {
 
 struct MeshShapeRequest {
-  std::string shape;           // "frustum"
-  std::vector<double> values;  // INTERFACE.md order: RADIUS,TOP_RADIUS,HEIGHT
+  std::string shape;           // "frustum" or "prism"
+  std::vector<double> values;  // frustum RADIUS,TOP_RADIUS,HEIGHT; prism WIDTH,HEIGHT
+  std::string section;         // prism: a synth::SectionKind name, empty for one drawn by the seed
   bool random_pose = false;
   std::size_t points = 20000;
   double noise = 0.0;          // share of the solid's size

@@ -19,6 +19,7 @@ namespace {
 struct ShapeArgs {
   std::string shape;
   std::string dims;
+  std::string section;
   std::size_t points = 20000;
   std::uint64_t seed = 1;
   bool random_pose = false;
@@ -39,6 +40,7 @@ void run_shape(const ShapeArgs& args) {
     MeshShapeRequest request;
     request.shape = args.shape;
     request.values = parse_numbers(args.dims, "--dims");
+    request.section = args.section;
     request.random_pose = args.random_pose;
     request.points = args.points;
     request.noise = args.noise;
@@ -91,13 +93,16 @@ void add_shape_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "shape", "Sample one solid; writes OUT and its ground truth OUT.json (same stem).");
   cmd->add_option("--shape", args->shape,
-                  "box, tetrahedron, pentagonal_prism, cone, cylinder, sphere, frustum")
+                  "box, tetrahedron, pentagonal_prism, cone, cylinder, sphere, frustum, prism")
       ->required();
   cmd->add_option("--dims", args->dims,
                   "Comma-separated, INTERFACE.md order: box L,W,H; tetrahedron EDGE; "
                   "pentagonal_prism SIDE,HEIGHT; cone/cylinder RADIUS,HEIGHT; sphere RADIUS; "
-                  "frustum RADIUS,TOP_RADIUS,HEIGHT")
+                  "frustum RADIUS,TOP_RADIUS,HEIGHT; prism WIDTH,HEIGHT")
       ->required();
+  cmd->add_option("--section", args->section,
+                  "prism cross-section: triangle, rhombus, regular_hexagon, hexagon, convex, letter_l, "
+                  "letter_t, plus, star (default: drawn by --seed)");
   cmd->add_option("--points", args->points, "Surface points (before outliers)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

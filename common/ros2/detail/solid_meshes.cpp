@@ -7,48 +7,12 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/polygon.hpp"
+
 namespace cloudshape::ros2::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double signed_area(const std::vector<Eigen::Vector2d>& polygon) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);
-  return 0.5 * twice;
-}
-
-bool inside_triangle(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-                     const Eigen::Vector2d& c) {
-  return cross(b - a, p - a) >= 0.0 && cross(c - b, p - b) >= 0.0 && cross(a - c, p - c) >= 0.0;
-}
-
-// Ear clipping of a counter-clockwise simple polygon: index triples, counter-clockwise.
-std::vector<std::array<std::size_t, 3>> triangulate(const std::vector<Eigen::Vector2d>& polygon) {
-  std::vector<std::size_t> left(polygon.size());
-  std::iota(left.begin(), left.end(), 0);
-  std::vector<std::array<std::size_t, 3>> out;
-  while (left.size() > 3) {
-    bool clipped = false;
-    for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
-      const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
-      if (cross(polygon[b] - polygon[a], polygon[c] - polygon[b]) <= 0.0) continue;  // reflex: no ear
-      const bool empty = std::none_of(left.begin(), left.end(), [&](std::size_t v) {
-        return v != a && v != b && v != c && inside_triangle(polygon[v], polygon[a], polygon[b], polygon[c]);
-      });
-      if (!empty) continue;
-      out.push_back({a, b, c});
-      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
-      clipped = true;
-    }
-    // Only a polygon that is not simple (or all collinear) has no ear: draw what was cut.
-    if (!clipped) return out;
-  }
-  if (left.size() == 3) out.push_back({left[0], left[1], left[2]});
-  return out;
-}
 
 }  // namespace
 
@@ -76,11 +40,11 @@ Triangles revolved(double base_radius, double top_radius, double height, int seg
 Triangles prism(const std::vector<Eigen::Vector2d>& polygon, double height) {
   if (polygon.size() < 3) return {};
   std::vector<Eigen::Vector2d> ccw = polygon;
-  if (signed_area(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
+  if (geometry::signed_area(ccw) < 0.0) std::reverse(ccw.begin(), ccw.end());
   const double h = 0.5 * height;
   const auto at = [&](double x, std::size_t i) { return Eigen::Vector3d(x, ccw[i].x(), ccw[i].y()); };
   Triangles out;
-  for (const auto& t : triangulate(ccw)) {
+  for (const auto& t : geometry::triangulate(ccw)) {
     out.insert(out.end(), {at(h, t[0]), at(h, t[1]), at(h, t[2])});
     out.insert(out.end(), {at(-h, t[0]), at(-h, t[2]), at(-h, t[1])});
   }
