@@ -418,24 +418,7 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
     return std::nullopt;
 
   // Height: the caps where seen, else where the points end along the axis.
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  double cap_lo = nan, cap_hi = nan;
-  for (const DetectedPlane* f : choice->caps) {  // largest first: noise may split a cap
-    double& cap = f->plane.normal.dot(axis) > 0 ? cap_hi : cap_lo;
-    if (std::isnan(cap)) cap = detail::face_position(in.cloud, *f, axis);
-  }
-  double lo = 0.0, hi = 0.0;
-  if (std::isnan(cap_lo) || std::isnan(cap_hi)) {
-    double min_t = std::numeric_limits<double>::infinity(), max_t = -min_t;
-    for (const Point& p : in.cloud) {
-      min_t = std::min(min_t, p.dot(axis));
-      max_t = std::max(max_t, p.dot(axis));
-    }
-    const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
-    std::tie(lo, hi) = detail::slab_median_extent(in.cloud, axis, slab, nan, nan, in.cfg.open_end_quantile);
-  }
-  if (!std::isnan(cap_lo)) lo = cap_lo;
-  if (!std::isnan(cap_hi)) hi = cap_hi;
+  auto [lo, hi] = detail::extrusion_extent(in, choice->caps, axis);
   const double height = hi - lo;
   if (!(height > 0.0)) return std::nullopt;
 

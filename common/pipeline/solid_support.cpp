@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "geometry/circle.hpp"
 #include "geometry/kdtree.hpp"
@@ -121,6 +122,30 @@ double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction) 
   const double slab = std::max(in.cfg.face_slab * (hi - lo), 2.0 * in.resolution);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   return slab_median_extent(in.cloud, direction, slab, nan, nan, in.cfg.open_end_quantile).second;
+}
+
+std::pair<double, double> extrusion_extent(const SolveInput& in,
+                                           const std::vector<const DetectedPlane*>& caps,
+                                           const Eigen::Vector3d& axis) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double cap_lo = nan, cap_hi = nan;
+  for (const DetectedPlane* f : caps) {
+    double& cap = f->plane.normal.dot(axis) > 0 ? cap_hi : cap_lo;
+    if (std::isnan(cap)) cap = face_position(in.cloud, *f, axis);
+  }
+  double lo = 0.0, hi = 0.0;
+  if (std::isnan(cap_lo) || std::isnan(cap_hi)) {
+    double min_t = std::numeric_limits<double>::infinity(), max_t = -min_t;
+    for (const Point& p : in.cloud) {
+      min_t = std::min(min_t, p.dot(axis));
+      max_t = std::max(max_t, p.dot(axis));
+    }
+    const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
+    std::tie(lo, hi) = slab_median_extent(in.cloud, axis, slab, nan, nan, in.cfg.open_end_quantile);
+  }
+  if (!std::isnan(cap_lo)) lo = cap_lo;
+  if (!std::isnan(cap_hi)) hi = cap_hi;
+  return {lo, hi};
 }
 
 std::size_t points_on_planes_along(const PlaneSegmentation& planes,

@@ -117,6 +117,12 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
 // of the extent along `direction`, at least two resolutions).
 double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction);
 
+// Where an extruded solid (a prism) ends along its `axis`: at its caps where seen (largest
+// first: noise may split a cap), else where the points end (slab_median_extent's open end).
+std::pair<double, double> extrusion_extent(const SolveInput& in,
+                                           const std::vector<const DetectedPlane*>& caps,
+                                           const Eigen::Vector3d& axis);
+
 // Points in planes (true faces or not) whose outward normal lies within `degrees` of one
 // of `normals`: how much of the cloud a polyhedron with these face directions accounts
 // for. Every plane on a polyhedron is one of its faces; the tangent strips RANSAC cuts

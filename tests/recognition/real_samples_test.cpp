@@ -49,6 +49,14 @@ const std::vector<Sample>& samples() {
   return all;
 }
 
+// The mesh sampled whole at 20k points (seed 1) and recognised with the shipped configuration.
+pipeline::RecognitionResult recognize_sampled_mesh(const std::filesystem::path& path, const std::string& source) {
+  const io::Mesh mesh = io::read_mesh(path.string());
+  std::mt19937_64 rng(1);
+  const PointList cloud = synth::sample_mesh_surface(mesh.vertices, mesh.triangles, 20000, rng);
+  return pipeline::recognize_cloud(cloud, config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), source);
+}
+
 // Names the sample in test listings instead of dumping its bytes.
 void PrintTo(const Sample& s, std::ostream* os) { *os << s.file; }
 
@@ -58,11 +66,7 @@ TEST_P(RealSample, ShapeAndDimensionsWithinSourcesTolerance) {
   const Sample& s = GetParam();
   const std::filesystem::path path = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / s.file;
   CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
-  const io::Mesh mesh = io::read_mesh(path.string());
-  std::mt19937_64 rng(1);
-  const PointList cloud = synth::sample_mesh_surface(mesh.vertices, mesh.triangles, 20000, rng);
-  const auto result = pipeline::recognize_cloud(
-      cloud, config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), s.file);
+  const auto result = recognize_sampled_mesh(path, s.file);
   ASSERT_EQ(result.objects.size(), 1u);
   const auto& got = result.objects.front();
   // One Markdown row per sample: docs/performance.md's real-data table is this output.
@@ -108,11 +112,7 @@ TEST_P(RavensProfile, IsAPrismWithItsSidesAndHeight) {
   const ProfileSample& s = GetParam();
   const std::filesystem::path path = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / s.file;
   CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
-  const io::Mesh mesh = io::read_mesh(path.string());
-  std::mt19937_64 rng(1);
-  const PointList cloud = synth::sample_mesh_surface(mesh.vertices, mesh.triangles, 20000, rng);
-  const auto result = pipeline::recognize_cloud(
-      cloud, config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML), s.file);
+  const auto result = recognize_sampled_mesh(path, s.file);
   ASSERT_EQ(result.objects.size(), 1u);
   const auto& got = result.objects.front();
   ASSERT_EQ(got.shape, "prism") << got.reason;

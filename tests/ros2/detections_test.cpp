@@ -92,7 +92,9 @@ TEST(Ros2Detections, UnknownObjectsBoxIsItsExtent) {
   unknown.extent.axes = test::test_rotation().transpose();
   unknown.extent.size = Eigen::Vector3d(0.3, 0.2, 0.1);
   r.objects.push_back(unknown);
-  const auto& d = to_detection_array(r, kHeader).detections()[0];
+  const vision_msgs::msg::Detection3DArray a = to_detection_array(r, kHeader);
+  ASSERT_EQ(a.detections().size(), 1u);
+  const auto& d = a.detections()[0];
   EXPECT_NEAR(d.bbox().size().x(), 0.3, 1e-15);
   EXPECT_NEAR(d.bbox().size().z(), 0.1, 1e-15);
   EXPECT_LT((position_of(d.bbox().center().position()) - unknown.extent.center).norm(), kTol);
