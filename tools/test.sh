@@ -72,10 +72,23 @@ if ((sanitize)); then
   cs_configure_and_build "${sanitize_tests[@]}" "${sanitize_process_targets[@]}"
   built=$((SECONDS - start))
   failed=()
+  # The unit programs run CLOUDSHAPE_JOBS at a time, each into its own log, shown when it fails.
+  logs="$CLOUDSHAPE_BUILD_DIR/sanitized-logs"
+  rm -rf "$logs" && mkdir -p "$logs"
+  declare -A running=()
+  reap_one() {
+    local pid="" status=0
+    wait -n -p pid "${!running[@]}" || status=$?
+    local t=${running[$pid]}
+    unset "running[$pid]"
+    if ((status == 0)); then cs_log "sanitized: $t clean"; else cat "$logs/$t.log" >&2; failed+=("$t"); fi
+  }
   for t in "${sanitize_tests[@]}"; do
-    cs_log "sanitized: $t"
-    "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 >&2 || failed+=("$t")
+    ((${#running[@]} < CLOUDSHAPE_JOBS)) || reap_one
+    "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 >"$logs/$t.log" 2>&1 &
+    running[$!]=$t
   done
+  while ((${#running[@]})); do reap_one; done
   units=$((SECONDS - start - built))
   cs_log "sanitized: process-level tests (ctest -R '$sanitize_process_tests')"
   # Fast DDS 2.9 deletes its statistics readers and writers through a base of another size
