@@ -13,6 +13,7 @@
 #include "io/detail/mapped_file.hpp"
 #include "io/detail/mcap_compression.hpp"
 #include "io/detail/mcap_cursor.hpp"
+#include "io/detail/mcap_definitions.hpp"
 #include "io/detail/mcap_format.hpp"
 #include "io/detail/mcap_index.hpp"
 
@@ -225,12 +226,7 @@ private:
 
   McapSchema parse_schema(const Record& r, std::size_t chunk_offset) const {
     m::RecordCursor c(r.content, name_, where(r, chunk_offset));
-    McapSchema s;
-    s.id = c.u16("id");
-    s.name = std::string(c.string("name"));
-    s.encoding = std::string(c.string("encoding"));
-    s.data = std::string(c.string("data"));
-    return s;
+    return m::read_schema_fields(c);
   }
 
   void read_schema(const Record& r, std::size_t chunk_offset) {
@@ -245,13 +241,7 @@ private:
 
   McapChannel parse_channel(const Record& r, std::size_t chunk_offset) const {
     m::RecordCursor c(r.content, name_, where(r, chunk_offset));
-    McapChannel ch;
-    ch.id = c.u16("id");
-    ch.schema_id = c.u16("schema_id");
-    ch.topic = std::string(c.string("topic"));
-    ch.message_encoding = std::string(c.string("message_encoding"));
-    ch.metadata = c.string_map("metadata");
-    return ch;
+    return m::read_channel_fields(c);
   }
 
   void read_channel(const Record& r, std::size_t chunk_offset) {

@@ -7,6 +7,7 @@
 
 #include "io/detail/crc32.hpp"
 #include "io/detail/mcap_cursor.hpp"
+#include "io/detail/mcap_definitions.hpp"
 #include "io/detail/mcap_format.hpp"
 
 namespace cloudshape::io::detail::mcap {
@@ -112,21 +113,12 @@ private:
     RecordCursor c(r.content, name_, opcode_name(r.opcode) + " record at " + at(r.offset));
     switch (r.opcode) {
       case kSchema: {
-        McapSchema s;
-        s.id = c.u16("id");
-        s.name = std::string(c.string("name"));
-        s.encoding = std::string(c.string("encoding"));
-        s.data = std::string(c.string("data"));
+        McapSchema s = read_schema_fields(c);
         if (s.id != 0) index_.schemas[s.id] = std::move(s);
         return;
       }
       case kChannel: {
-        McapChannel ch;
-        ch.id = c.u16("id");
-        ch.schema_id = c.u16("schema_id");
-        ch.topic = std::string(c.string("topic"));
-        ch.message_encoding = std::string(c.string("message_encoding"));
-        ch.metadata = c.string_map("metadata");
+        McapChannel ch = read_channel_fields(c);
         index_.channels[ch.id] = std::move(ch);
         return;
       }
