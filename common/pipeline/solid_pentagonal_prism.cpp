@@ -62,18 +62,6 @@ std::optional<PrismFaces> prism_faces(const std::vector<const DetectedPlane*>& f
   return best;
 }
 
-// Least-squares axis: perpendicular to every side normal, along every cap normal.
-Eigen::Vector3d refine_axis(const PrismFaces& set) {
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-  for (const DetectedPlane* f : set.sides)
-    m.noalias() += static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
-  for (const DetectedPlane* f : set.caps)
-    m.noalias() -= static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
-  Eigen::Vector3d axis = solver.eigenvectors().col(0).normalized();
-  return axis.dot(set.axis) < 0 ? Eigen::Vector3d(-axis) : axis;
-}
-
 // Width of a face's points along `across`, between their 2nd and 98th percentiles.
 double side_span(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& across) {
   std::vector<double> t;
@@ -104,7 +92,7 @@ std::size_t points_around(const PlaneSegmentation& planes, const Eigen::Vector3d
 std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   const auto found = prism_faces(detail::faces_by_size(in.planes), in.cfg);
   if (!found) return std::nullopt;
-  const Eigen::Vector3d axis = refine_axis(*found);
+  const Eigen::Vector3d axis = detail::extrusion_axis(found->sides, found->caps, found->axis);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
 

@@ -91,18 +91,6 @@ std::optional<AxisChoice> choose_axis(const SolveInput& in, const std::vector<co
   return best;
 }
 
-// Least-squares axis: perpendicular to every side normal, along every cap normal.
-Eigen::Vector3d refine_axis(const AxisChoice& c) {
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-  for (const DetectedPlane* f : c.sides)
-    m.noalias() += static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
-  for (const DetectedPlane* f : c.caps)
-    m.noalias() -= static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
-  Eigen::Vector3d axis = solver.eigenvectors().col(0).normalized();
-  return axis.dot(c.axis) < 0 ? Eigen::Vector3d(-axis) : axis;
-}
-
 // The side face's stretches in the cross-section: its points split where they leave a gap (two
 // coplanar sides of a non-convex outline, such as a plus sign's arms, share one plane). The
 // outward side is where the caps' points are not; without a cap the plane's own normal (away
@@ -356,7 +344,7 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
   const auto choice = choose_axis(in, faces);
   if (!choice) return std::nullopt;
-  const Eigen::Vector3d axis = refine_axis(*choice);
+  const Eigen::Vector3d axis = detail::extrusion_axis(choice->sides, choice->caps, choice->axis);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
 

@@ -124,6 +124,18 @@ double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction) 
   return slab_median_extent(in.cloud, direction, slab, nan, nan, in.cfg.open_end_quantile).second;
 }
 
+Eigen::Vector3d extrusion_axis(const std::vector<const DetectedPlane*>& sides,
+                               const std::vector<const DetectedPlane*>& caps, const Eigen::Vector3d& hint) {
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  for (const DetectedPlane* f : sides)
+    m.noalias() += static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
+  for (const DetectedPlane* f : caps)
+    m.noalias() -= static_cast<double>(f->inliers.size()) * f->plane.normal * f->plane.normal.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(m);
+  Eigen::Vector3d axis = solver.eigenvectors().col(0).normalized();
+  return axis.dot(hint) < 0 ? Eigen::Vector3d(-axis) : axis;
+}
+
 std::pair<double, double> extrusion_extent(const SolveInput& in,
                                            const std::vector<const DetectedPlane*>& caps,
                                            const Eigen::Vector3d& axis) {

@@ -117,6 +117,11 @@ std::pair<double, double> slab_median_extent(const PointList& cloud, const Eigen
 // of the extent along `direction`, at least two resolutions).
 double open_end_support(const SolveInput& in, const Eigen::Vector3d& direction);
 
+// A prism's axis by least squares: perpendicular to every side normal, along every cap normal
+// (each weighted by its inliers), signed like `hint`.
+Eigen::Vector3d extrusion_axis(const std::vector<const DetectedPlane*>& sides,
+                               const std::vector<const DetectedPlane*>& caps, const Eigen::Vector3d& hint);
+
 // Where an extruded solid (a prism) ends along its `axis`: at its caps where seen (largest
 // first: noise may split a cap), else where the points end (slab_median_extent's open end).
 std::pair<double, double> extrusion_extent(const SolveInput& in,
