@@ -16,10 +16,6 @@ double spread_of(const geometry::Pca& pca) {
 
 }  // namespace
 
-double spread_across(const PointList& points, const std::vector<std::uint32_t>& indices) {
-  return indices.size() < 3 ? 0.0 : spread_of(geometry::compute_pca(points, indices));
-}
-
 std::vector<std::pair<std::uint32_t, std::uint32_t>> widen_line_neighbourhoods(
     const PointList& nodes, const std::vector<char>& linear_knn, const std::vector<Eigen::Vector3d>& line_of,
     const config::SegmentConfig& cfg, std::vector<Eigen::Vector3d>& normals, std::vector<double>& curvature) {

@@ -11,9 +11,6 @@
 
 namespace cloudshape::segment {
 
-// Second over first standard deviation of the points: 0 on a line, 1 on an even disc.
-double spread_across(const PointList& points, const std::vector<std::uint32_t>& indices);
-
 // Nodes whose cfg.normal_neighbours nearest nodes spread less than cfg.line_spread across
 // (`linear_knn`) double their neighbourhood, up to cfg.line_max_neighbours nodes, until it spreads
 // that much; normal and curvature then come from it (a node still on a line, a pole, keeps its

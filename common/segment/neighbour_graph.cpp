@@ -34,8 +34,10 @@ struct Moments {
 };
 
 // Normal (smallest principal direction) and surface variation; a default up normal when the
-// neighbourhood is too small to say. `spread`, if given: second over first standard deviation.
-void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, double* spread = nullptr) {
+// neighbourhood is too small to say. `spread`, if given: second over first standard deviation;
+// `major_axis`: the direction of the largest.
+void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, double* spread = nullptr,
+               Eigen::Vector3d* major_axis = nullptr) {
   if (spread) *spread = 1.0;
   if (m.count < 3) {
     normal = Eigen::Vector3d::UnitZ();
@@ -49,6 +51,7 @@ void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, dou
   normal = eig.eigenvectors().col(0).normalized();
   const double total = eig.eigenvalues().sum();
   curvature = total > 0.0 ? std::max(0.0, eig.eigenvalues()(0)) / total : 0.0;
+  if (major_axis) *major_axis = eig.eigenvectors().col(2);
   if (spread) {
     const double major = eig.eigenvalues()(2);
     *spread = major > 0.0 ? std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / major) : 0.0;
@@ -282,36 +285,51 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   }
   for (std::size_t n = 0; n < g.size(); ++n) g.nodes[n] /= static_cast<double>(counts[n]);
 
-  g.adjacency_begin.assign(nodes + 1, 0);
-  g.adjacency.reserve(nodes * 8);
-  std::vector<std::uint32_t> near;
+  // Adjacency is symmetric: each voxel looks up only the 13 neighbours after it (in key order),
+  // and each pair found is listed on both sides; rows are then sorted by node id.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  pairs.reserve(nodes * 6);
   for (std::size_t n = 0; n < nodes; ++n) {
     const Key key = keys[n];
     const std::int64_t x = static_cast<std::int64_t>(key >> 42);
     const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
     const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
-    near.clear();
-    for (int dx = -1; dx <= 1; ++dx) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dz = -1; dz <= 1; ++dz) {
-          if (dx == 0 && dy == 0 && dz == 0) continue;
-          if (x + dx < 0 || y + dy < 0 || z + dz < 0) continue;
+    for (int dx = 0; dx <= 1; ++dx) {
+      for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
+        for (int dz = dx == 0 && dy == 0 ? 1 : -1; dz <= 1; ++dz) {
+          if (y + dy < 0 || z + dz < 0) continue;
           const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
           const std::uint32_t m = voxels.find(k);
-          if (m != geometry::detail::CellMap::kAbsent) near.push_back(m);
+          if (m != geometry::detail::CellMap::kAbsent) pairs.emplace_back(static_cast<std::uint32_t>(n), m);
         }
       }
     }
-    std::sort(near.begin(), near.end());
-    g.adjacency.insert(g.adjacency.end(), near.begin(), near.end());
-    g.adjacency_begin[n + 1] = static_cast<std::uint32_t>(g.adjacency.size());
+  }
+  g.adjacency_begin.assign(nodes + 1, 0);
+  for (const auto& [a, b] : pairs) {
+    ++g.adjacency_begin[a + 1];
+    ++g.adjacency_begin[b + 1];
+  }
+  for (std::size_t n = 0; n < nodes; ++n) g.adjacency_begin[n + 1] += g.adjacency_begin[n];
+  g.adjacency.resize(2 * pairs.size());
+  {
+    std::vector<std::uint32_t> next(g.adjacency_begin.begin(), g.adjacency_begin.end() - 1);
+    for (const auto& [a, b] : pairs) {
+      g.adjacency[next[a]++] = b;
+      g.adjacency[next[b]++] = a;
+    }
+  }
+  for (std::size_t n = 0; n < nodes; ++n) {
+    std::sort(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
   }
   fill_spacing(g, voxel);
 
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
-  // Nodes sit about a voxel apart on a surface: the k-th lies within sqrt(k / pi) voxels.
+  // Nodes sit about a voxel apart on a surface: the k-th lies within sqrt(k / pi) voxels. A grid
+  // cell of sqrt(k) / 2 voxels (the search reaches one to one and a half cells) costs the fewest
+  // distances plus kd-tree fall-backs (callgrind, 100k-point solids: 0.75 cost 1.5x, 0.4 1.4x).
   std::vector<std::uint32_t> knn;
-  geometry::all_nearest_neighbours(g.nodes, k, 0.75 * std::sqrt(static_cast<double>(k)) * voxel, knn, pool);
+  geometry::all_nearest_neighbours(g.nodes, k, 0.5 * std::sqrt(static_cast<double>(k)) * voxel, knn, pool);
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
   std::vector<char> linear(g.size(), 0);
@@ -328,13 +346,20 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   // A node whose voxel neighbours lie on a line through it (one on each side at least: a pair of
   // stray points is no ring) sits on one scan ring.
   std::vector<Eigen::Vector3d> line_of(g.size(), Eigen::Vector3d::Zero());
+  // One closed-form eigen decomposition of the moments gives both the spread and the line.
   parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
-    std::vector<std::uint32_t> around;
     for (std::size_t n = begin; n < end; ++n) {
-      around.assign(1, static_cast<std::uint32_t>(n));
-      g.for_neighbours(static_cast<std::uint32_t>(n), [&](std::uint32_t m) { around.push_back(m); });
-      if (around.size() < 3 || spread_across(g.nodes, around) >= cfg.line_spread) continue;
-      line_of[n] = geometry::compute_pca(g.nodes, around).eigenvectors.col(2).normalized();
+      Moments m;
+      m.origin = g.nodes[n];
+      m.add(g.nodes[n]);
+      g.for_neighbours(static_cast<std::uint32_t>(n), [&](std::uint32_t j) { m.add(g.nodes[j]); });
+      if (m.count < 3) continue;
+      Eigen::Vector3d normal;
+      double curvature = 0.0, spread = 1.0;
+      Eigen::Vector3d major;
+      normal_of(m, normal, curvature, &spread, &major);
+      if (spread >= cfg.line_spread) continue;
+      line_of[n] = major.normalized();
       if (!line_of[n].allFinite()) line_of[n].setZero();
     }
   });
