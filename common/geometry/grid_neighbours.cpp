@@ -131,6 +131,33 @@ double brute_nearest_other(const PointList& points, std::size_t i) {
 
 bool closer(double da, std::uint32_t ia, double db, std::uint32_t ib) { return da < db || (da == db && ia < ib); }
 
+// Rings beyond the first block, at most this far: a point this sparse is left to the kd-tree.
+constexpr std::int64_t kWidestRing = 3;
+
+// Row i of all_nearest_neighbours from the cells within 2, then 3 rings of point i's, when at
+// least k points lie within the reach of those rings: every point nearer lies in them, so the
+// row is exact. False if none of the rings holds k (the kd-tree answers). `ranked`: scratch.
+bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint32_t i, std::size_t k,
+                            std::vector<std::pair<double, std::uint32_t>>& ranked, std::vector<std::uint32_t>& out) {
+  const auto c = grid.coords(points[i]);
+  ranked.clear();
+  for (std::int64_t ring = 0; ring <= 1; ++ring) {
+    grid.for_ring(c, ring, [&](std::uint32_t j) { ranked.emplace_back(squared_distance(points[i], points[j]), j); });
+  }
+  for (std::int64_t ring = 2; ring <= kWidestRing; ++ring) {
+    grid.for_ring(c, ring, [&](std::uint32_t j) { ranked.emplace_back(squared_distance(points[i], points[j]), j); });
+    const double reach = grid.reach(points[i], ring);
+    const double limit = reach * reach;
+    std::size_t within = 0;
+    for (const auto& r : ranked) within += r.first <= limit ? 1 : 0;
+    if (within < k) continue;
+    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return closer(a.first, a.second, b.first, b.second); });
+    for (std::size_t j = 0; j < k; ++j) out[i * k + j] = ranked[j].second;
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries) {
@@ -239,6 +266,7 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
       std::vector<std::uint32_t> candidates;
       std::vector<double> cx, cy, cz, dist;
       std::vector<std::uint32_t> near;
+      std::vector<std::pair<double, std::uint32_t>> wide;
       std::vector<double> best_d(k);
       std::vector<std::uint32_t> best_i(k);
       for (std::size_t s = cell_begin; s < cell_end; ++s) {
@@ -277,7 +305,7 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
             within += d <= limit ? 1 : 0;
           }
           if (within < k) {
-            block_hard.push_back(i);
+            if (!nearest_in_wider_rings(grid, points, i, k, wide, out)) block_hard.push_back(i);
             continue;
           }
           std::size_t count = 0;

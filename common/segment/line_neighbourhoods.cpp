@@ -25,6 +25,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> widen_line_neighbourhoods(
   const std::size_t k_max = std::min<std::size_t>(
       nodes.size(), static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.line_max_neighbours)));
   if (k_max <= k0) return across;
+  // Most clouds have no node on a line: no tree for them.
+  const bool any = std::any_of(linear_knn.begin(), linear_knn.end(), [](char c) { return c != 0; }) ||
+                   std::any_of(line_of.begin(), line_of.end(), [](const Eigen::Vector3d& d) { return d.squaredNorm() > 0.0; });
+  if (!any) return across;
   const geometry::KdTree tree(nodes);
   const double cos_off_line = std::cos(45.0 * 3.14159265358979323846 / 180.0);
   std::vector<std::uint32_t> idx;

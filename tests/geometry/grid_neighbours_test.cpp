@@ -96,8 +96,20 @@ TEST(GridNeighbours, KnnIsExactForAnyCellSize) {
   expect_knn_exact(surface, 16, 0.6);
   expect_knn_exact(surface, 16, 0.05);
   expect_knn_exact(surface, 16, 3.0);
+  // The 16th beyond the first block's reach but within two or three rings of cells.
+  expect_knn_exact(surface, 16, 0.3);
+  expect_knn_exact(surface, 16, 0.2);
   expect_knn_exact(volume(2000, 5), 8, 0.5);
   expect_knn_exact(line_with_outlier(), 16, 0.03);
+}
+
+// A lattice: every distance tied many times over, the ties going by index in the wider rings too.
+TEST(GridNeighbours, KnnTiesGoByIndexInWiderRings) {
+  PointList lattice;
+  for (int x = 0; x < 12; ++x)
+    for (int y = 0; y < 12; ++y) lattice.emplace_back(0.1 * x, 0.1 * y, 0.0);
+  expect_knn_exact(lattice, 20, 0.07);
+  expect_knn_exact(lattice, 9, 0.05);
 }
 
 // With a pool, blocks of cells and the kd-tree fall-backs run on its threads: the same rows as
