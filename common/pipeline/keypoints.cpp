@@ -1,6 +1,7 @@
 #include "pipeline/keypoints.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace cloudshape::pipeline {
 
@@ -27,11 +28,13 @@ std::uint32_t pursue_vertex(const geometry::KdTree& tree, std::uint32_t start, c
 }
 
 KeypointSet find_keypoints(const PointList& cloud, const PlaneSegmentation& planes,
-                           double resolution, const config::KeypointsConfig& cfg) {
+                           double resolution, const config::KeypointsConfig& cfg,
+                           const geometry::KdTree* shared_tree) {
   KeypointSet out;
   if (cloud.empty()) return out;
   out.reference = geometry::minimal_enclosing_sphere(cloud);
-  const geometry::KdTree tree(cloud);
+  std::optional<geometry::KdTree> own_tree;
+  const geometry::KdTree& tree = shared_tree ? *shared_tree : own_tree.emplace(cloud);
   const auto k = static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.neighbourhood));
   std::vector<std::uint32_t> reached;
   std::vector<std::uint32_t> nb;

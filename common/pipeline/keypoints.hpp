@@ -27,7 +27,9 @@ struct KeypointSet {
 std::uint32_t pursue_vertex(const geometry::KdTree& tree, std::uint32_t start, const Point& centre,
                             std::size_t neighbourhood, std::int64_t max_steps);
 
+// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages).
 KeypointSet find_keypoints(const PointList& cloud, const PlaneSegmentation& planes,
-                           double resolution, const config::KeypointsConfig& cfg);
+                           double resolution, const config::KeypointsConfig& cfg,
+                           const geometry::KdTree* tree = nullptr);
 
 }  // namespace cloudshape::pipeline

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 
 #include "pipeline/plane_patch.hpp"
@@ -138,11 +139,12 @@ std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
 }
 
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg) {
+                                 const config::PlanesConfig& cfg, const geometry::KdTree* shared_tree) {
   PlaneSegmentation out;
   out.labels.assign(cloud.size(), -1);
   if (cloud.size() < 3 || !(resolution > 0.0)) return out;
-  const geometry::KdTree tree(cloud);
+  std::optional<geometry::KdTree> own_tree;
+  const geometry::KdTree& tree = shared_tree ? *shared_tree : own_tree.emplace(cloud);
   std::mt19937_64 rng(cfg.seed);
   const std::size_t min_points = std::max<std::size_t>(
       static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.min_plane_points)),

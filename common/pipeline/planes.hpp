@@ -40,8 +40,9 @@ struct PlaneSegmentation {
   std::vector<std::int32_t> labels;  // per point: index of its plane, or -1
 };
 
+// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages).
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg);
+                                 const config::PlanesConfig& cfg, const geometry::KdTree* tree = nullptr);
 
 // Lines where two planes meet, clipped to where both planes' boundary points lie near.
 std::vector<PlaneLine> find_plane_lines(const PointList& cloud,

@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "geometry/kdtree.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
@@ -54,13 +55,15 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     const ObjectCloud& o = clouds.objects[begin];
     StageTimings& t = times[begin];
     StageClock object_clock;
-    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes);
+    // One search tree over the object's points for every stage that needs neighbours.
+    const geometry::KdTree tree(o.points);
+    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes, &tree);
     t.planes_ms = object_clock.lap_ms();
-    const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints);
+    const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints, &tree);
     t.keypoints_ms = object_clock.lap_ms();
     const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
     t.classify_ms = object_clock.lap_ms();
-    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve);
+    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve, &tree);
     objects[begin].point_indices = o.raw_indices;
     t.solve_ms = object_clock.lap_ms();
   });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "geometry/circle.hpp"
@@ -16,7 +17,7 @@ const std::vector<detail::SurfaceSample>& SolveInput::cloud_normals() const {
   if (!normals_) {
     std::vector<std::uint32_t> all(cloud.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
-    normals_ = detail::sample_normals(cloud, all);
+    normals_ = detail::sample_normals(cloud, all, 1500, tree);
   }
   return *normals_;
 }
@@ -56,10 +57,11 @@ double face_position(const PointList& cloud, const DetectedPlane& face, const Ei
 
 std::vector<SurfaceSample> sample_normals(const PointList& cloud,
                                           const std::vector<std::uint32_t>& points,
-                                          std::size_t max_samples) {
+                                          std::size_t max_samples, const geometry::KdTree* shared_tree) {
   std::vector<SurfaceSample> out;
   if (points.size() < 8) return out;
-  const geometry::KdTree tree(cloud);
+  std::optional<geometry::KdTree> own_tree;
+  const geometry::KdTree& tree = shared_tree ? *shared_tree : own_tree.emplace(cloud);
   const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));
   std::vector<std::uint32_t> nb;
   for (std::size_t k = 0; k < points.size(); k += step) {

@@ -36,6 +36,7 @@ struct SolveInput {
   const Classification& classification;
   double resolution;
   const config::SolveConfig& cfg;
+  const geometry::KdTree* tree = nullptr;  // over `cloud`, when the caller has one to share
 
   // Normals over the whole cloud, estimated on first use and shared by the fitters that
   // need them (cylinder and cone without a face to seed them).
@@ -91,9 +92,11 @@ std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes)
 double face_position(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis);
 
 // Local-plane normals (12-neighbour PCA) of at most `max_samples` of the given points.
+// `tree`, if given, is a search tree over `cloud`.
 std::vector<SurfaceSample> sample_normals(const PointList& cloud,
                                           const std::vector<std::uint32_t>& points,
-                                          std::size_t max_samples = 1500);
+                                          std::size_t max_samples = 1500,
+                                          const geometry::KdTree* tree = nullptr);
 
 // The direction the normals are all perpendicular to (a cylinder's axis).
 Eigen::Vector3d axis_from_normals(const std::vector<SurfaceSample>& samples);

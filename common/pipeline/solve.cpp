@@ -76,7 +76,7 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
-                          double resolution, const config::SolveConfig& cfg) {
+                          double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -86,7 +86,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     out.extent = extent_of(cloud, {}, cfg);
     return out;
   }
-  const SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
+  SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
+  input.tree = tree;
   const double tolerance = cfg.inlier_distance * resolution;
   const double diameter = 2.0 * keypoints.reference.radius;
   std::vector<std::pair<FittedSolid, Verification>> fitted;

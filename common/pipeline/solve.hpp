@@ -14,8 +14,10 @@ namespace cloudshape::pipeline {
 // cfg.inlier_distance resolutions of its surface, and reports the class the key-points
 // chose unless another solid explains clearly more. `unknown` with a reason when none
 // explains at least cfg.min_inlier_fraction of the points.
+// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages).
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
-                          double resolution, const config::SolveConfig& cfg);
+                          double resolution, const config::SolveConfig& cfg,
+                          const geometry::KdTree* tree = nullptr);
 
 }  // namespace cloudshape::pipeline
