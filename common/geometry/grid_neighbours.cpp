@@ -160,7 +160,8 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 
 }  // namespace
 
-std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries) {
+std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
+                                            parallel::ThreadPool* pool) {
   std::vector<double> out(queries.size(), 0.0);
   if (points.size() < 2) return out;
   const Bounds box = bounding_box(points);
@@ -201,15 +202,25 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
     for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
     std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
     for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
-    std::vector<double> best(queries.size(), std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto c = coords(points[i]);
-      const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
-      if (slot == detail::CellMap::kAbsent) continue;
-      for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
-        const std::uint32_t q = cell_queries[e];
-        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+    // Blocks of points on the pool, each with its own minima; a minimum is the same in any order.
+    constexpr std::size_t kPointsPerBlock = 16384;
+    std::vector<std::vector<double>> best_of_block((points.size() + kPointsPerBlock - 1) / kPointsPerBlock);
+    parallel::for_blocks(pool, points.size(), kPointsPerBlock, [&](std::size_t begin, std::size_t end) {
+      std::vector<double>& best = best_of_block[begin / kPointsPerBlock];
+      best.assign(queries.size(), std::numeric_limits<double>::infinity());
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto c = coords(points[i]);
+        const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
+        if (slot == detail::CellMap::kAbsent) continue;
+        for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
+          const std::uint32_t q = cell_queries[e];
+          if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+        }
       }
+    });
+    std::vector<double> best = std::move(best_of_block.front());
+    for (std::size_t b = 1; b < best_of_block.size(); ++b) {
+      for (std::size_t q = 0; q < queries.size(); ++q) best[q] = std::min(best[q], best_of_block[b][q]);
     }
     for (std::size_t q = 0; q < queries.size(); ++q) {
       const Eigen::Vector3d u = (points[queries[q]] - box.min) * inv;

@@ -12,7 +12,9 @@ namespace cloudshape::geometry {
 
 // Distance from points[i] to its nearest other point, for each i of `queries`, in their order
 // (exact: a query whose neighbour the grid cannot vouch for is answered by a kd-tree).
-std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries);
+// With a `pool`, blocks of points run on its threads: the same distances.
+std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
+                                            parallel::ThreadPool* pool = nullptr);
 
 // The k nearest points (itself included) of every point, nearest first: row i of the
 // n x min(k, n) result in `out`. `cell` should be about the k-th neighbour's distance (a larger

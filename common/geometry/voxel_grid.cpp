@@ -91,7 +91,7 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   return out;
 }
 
-double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples) {
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool) {
   if (points.size() < 2) return 0.0;
   const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));
   std::vector<std::uint32_t> sample;
@@ -99,7 +99,7 @@ double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_
   double sum = 0.0;
   // The grid's one binning pass beats a kd-tree's sorting on big clouds only; both are exact.
   if (points.size() > kGridFrom) {
-    for (double d : nearest_other_distances(points, sample)) sum += d;
+    for (double d : nearest_other_distances(points, sample, pool)) sum += d;
     return sum / static_cast<double>(sample.size());
   }
   const KdTree tree(points);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 
@@ -16,7 +17,9 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
 
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
-double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000);
+// A `pool` shares the grid's pass over the points out (large clouds): the same value.
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
+                                       parallel::ThreadPool* pool = nullptr);
 
 struct Bounds {
   Point min = Point::Zero();

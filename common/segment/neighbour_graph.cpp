@@ -81,17 +81,19 @@ void add_edges(NeighbourGraph& g, const std::vector<std::pair<std::uint32_t, std
   g.adjacency.swap(adjacency);
 }
 
-void fill_spacing(NeighbourGraph& g, double fallback) {
+void fill_spacing(NeighbourGraph& g, double fallback, parallel::ThreadPool* pool) {
   g.spacing.assign(g.size(), fallback);
-  for (std::uint32_t n = 0; n < g.size(); ++n) {
-    double sum = 0.0;
-    int count = 0;
-    g.for_neighbours(n, [&](std::uint32_t m) {
-      sum += (g.nodes[n] - g.nodes[m]).norm();
-      ++count;
-    });
-    if (count > 0) g.spacing[n] = sum / count;
-  }
+  parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    for (auto n = static_cast<std::uint32_t>(begin); n < end; ++n) {
+      double sum = 0.0;
+      int count = 0;
+      g.for_neighbours(n, [&](std::uint32_t m) {
+        sum += (g.nodes[n] - g.nodes[m]).norm();
+        ++count;
+      });
+      if (count > 0) g.spacing[n] = sum / count;
+    }
+  });
 }
 
 }  // namespace
@@ -162,7 +164,7 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
       g.adjacency_begin[a + 1] = static_cast<std::uint32_t>(g.adjacency.size());
     }
   }
-  fill_spacing(g, 0.0);
+  fill_spacing(g, 0.0, pool);
 
   // Every point joins the node of its cell, or of a neighbouring cell, on its side of any jump.
   g.node_of_point.assign(points.size(), kNoNode);
@@ -243,7 +245,7 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   // extent bounds it without squares, which underflow for a cloud of 1e-253 (found by fuzzing).
   const double extent = (box.max - box.min).maxCoeff();
   double voxel = std::max({box.diagonal() / std::sqrt(target),
-                           3.0 * geometry::mean_nearest_neighbour_distance(points), extent / kMaxCellsPerAxis, 1e-300});
+                           3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool), extent / kMaxCellsPerAxis, 1e-300});
 
   using Key = std::uint64_t;
   const auto key_of = [&](const Point& p, double v) {
@@ -287,24 +289,30 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
 
   // Adjacency is symmetric: each voxel looks up only the 13 neighbours after it (in key order),
   // and each pair found is listed on both sides; rows are then sorted by node id.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  pairs.reserve(nodes * 6);
-  for (std::size_t n = 0; n < nodes; ++n) {
-    const Key key = keys[n];
-    const std::int64_t x = static_cast<std::int64_t>(key >> 42);
-    const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
-    const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
-    for (int dx = 0; dx <= 1; ++dx) {
-      for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
-        for (int dz = dx == 0 && dy == 0 ? 1 : -1; dz <= 1; ++dz) {
-          if (y + dy < 0 || z + dz < 0) continue;
-          const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
-          const std::uint32_t m = voxels.find(k);
-          if (m != geometry::detail::CellMap::kAbsent) pairs.emplace_back(static_cast<std::uint32_t>(n), m);
+  // Blocks of nodes find their pairs on the pool; the pairs are joined in block order.
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> pairs_of_block((nodes + kNodesPerBlock - 1) / kNodesPerBlock);
+  parallel::for_blocks(pool, nodes, kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    auto& found = pairs_of_block[begin / kNodesPerBlock];
+    found.reserve((end - begin) * 6);
+    for (std::size_t n = begin; n < end; ++n) {
+      const Key key = keys[n];
+      const std::int64_t x = static_cast<std::int64_t>(key >> 42);
+      const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
+      const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
+      for (int dx = 0; dx <= 1; ++dx) {
+        for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
+          for (int dz = dx == 0 && dy == 0 ? 1 : -1; dz <= 1; ++dz) {
+            if (y + dy < 0 || z + dz < 0) continue;
+            const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
+            const std::uint32_t m = voxels.find(k);
+            if (m != geometry::detail::CellMap::kAbsent) found.emplace_back(static_cast<std::uint32_t>(n), m);
+          }
         }
       }
     }
-  }
+  });
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const auto& found : pairs_of_block) pairs.insert(pairs.end(), found.begin(), found.end());
   g.adjacency_begin.assign(nodes + 1, 0);
   for (const auto& [a, b] : pairs) {
     ++g.adjacency_begin[a + 1];
@@ -319,10 +327,12 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
       g.adjacency[next[b]++] = a;
     }
   }
-  for (std::size_t n = 0; n < nodes; ++n) {
-    std::sort(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
-  }
-  fill_spacing(g, voxel);
+  parallel::for_blocks(pool, nodes, kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) {
+      std::sort(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
+    }
+  });
+  fill_spacing(g, voxel, pool);
 
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
   // Nodes sit about a voxel apart on a surface: the k-th lies within sqrt(k / pi) voxels. A grid

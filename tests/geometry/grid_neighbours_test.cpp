@@ -129,6 +129,19 @@ TEST(GridNeighbours, AnyPoolGivesTheSameRows) {
   }
 }
 
+// The pass over the points in blocks (several of them at 40 000 points), each block's minima
+// joined: bit for bit the serial distances, with any number of threads.
+TEST(GridNeighbours, NearestOtherWithAPoolIsTheSame) {
+  const PointList pts = sphere_surface(40000, 6);
+  std::vector<std::uint32_t> queries;
+  for (std::uint32_t i = 0; i < pts.size(); i += 13) queries.push_back(i);
+  const std::vector<double> serial = nearest_other_distances(pts, queries);
+  for (std::size_t threads : {1u, 2u, 3u}) {
+    parallel::ThreadPool pool(threads);
+    EXPECT_EQ(nearest_other_distances(pts, queries, &pool), serial) << threads << " threads";
+  }
+}
+
 TEST(GridNeighbours, FewerPointsThanK) {
   const PointList pts{Point(0, 0, 0), Point(1, 0, 0), Point(0, 2, 0)};
   std::vector<std::uint32_t> got;
