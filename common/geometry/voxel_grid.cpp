@@ -91,6 +91,26 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   return out;
 }
 
+std::size_t count_occupied_voxels(const PointList& points, double voxel_size) {
+  if (!(voxel_size > 0.0) || points.empty()) return points.size();
+  const Bounds b = bounding_box(points);
+  const double inv = 1.0 / voxel_size;
+  // The same keys and the same validity as voxel_grid_downsample's.
+  const Eigen::Vector3d extent = (b.max - b.min) * inv;
+  if (!std::isfinite(inv) || !extent.allFinite() || !(extent.maxCoeff() < double((1 << 21) - 3))) return points.size();
+  detail::CellMap slot(points.size() / 4 + 16);
+  std::uint32_t occupied = 0;
+  for (const Point& p : points) {
+    const Eigen::Vector3d q = (p - b.min) * inv;
+    const std::uint64_t key = ((static_cast<std::uint64_t>(q.x()) + 1) << 42) |
+                              ((static_cast<std::uint64_t>(q.y()) + 1) << 21) | (static_cast<std::uint64_t>(q.z()) + 1);
+    bool inserted = false;
+    slot.find_or_insert(key, occupied, inserted);
+    occupied += inserted ? 1 : 0;
+  }
+  return occupied;
+}
+
 double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool) {
   if (points.size() < 2) return 0.0;
   const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));

@@ -15,6 +15,10 @@ namespace cloudshape::geometry {
 PointList voxel_grid_downsample(const PointList& points, double voxel_size,
                                 int min_occupied_neighbours = 0, std::size_t* isolated = nullptr);
 
+// voxel_grid_downsample(points, voxel_size).size() without building the points: for searches
+// of the voxel size that only count.
+std::size_t count_occupied_voxels(const PointList& points, double voxel_size);
+
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
 // A `pool` shares the grid's pass over the points out (large clouds): the same value.

@@ -67,7 +67,7 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
     const std::size_t stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
     for (std::size_t i = 0; i < raw.size(); i += stride) sparse.push_back(raw[i]);
     for (int attempt = 0; attempt < 4; ++attempt) {
-      const std::size_t n = geometry::voxel_grid_downsample(sparse, voxel).size();
+      const std::size_t n = geometry::count_occupied_voxels(sparse, voxel);
       if (n <= budget) break;
       voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
               std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;

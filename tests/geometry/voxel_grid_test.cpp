@@ -1,6 +1,8 @@
 // Voxel grid centroids, its isolated-voxel filter, and the resolution estimate.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "geometry/voxel_grid.hpp"
 
 namespace cloudshape::geometry {
@@ -47,6 +49,16 @@ TEST(VoxelGrid, IsolatedVoxelsAreDroppedOnlyWhenRare) {
   const PointList sparse = grid(10, 1.0);
   EXPECT_EQ(voxel_grid_downsample(sparse, 0.1, 2, &isolated).size(), sparse.size());
   EXPECT_EQ(isolated, 0u);
+}
+
+// The count the voxel-size search uses is the downsampled cloud's size, degenerate grids included.
+TEST(VoxelGrid, CountOfOccupiedVoxelsIsTheDownsampledSize) {
+  PointList pts = grid(40, 0.37);
+  for (Point& p : pts) p.z() = 0.05 * std::sin(p.x() * 3.0 + p.y());
+  for (double voxel : {0.1, 0.37, 0.5, 1.3, 7.0, 0.0, -1.0, 1e-310}) {
+    EXPECT_EQ(count_occupied_voxels(pts, voxel), voxel_grid_downsample(pts, voxel).size()) << "voxel " << voxel;
+  }
+  EXPECT_EQ(count_occupied_voxels({}, 1.0), 0u);
 }
 
 TEST(Resolution, MeanNearestNeighbourOfARegularGrid) {
