@@ -18,7 +18,7 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
 
 // The k nearest points (itself included) of every point, nearest first: row i of the
 // n x min(k, n) result in `out`. `cell` should be about the k-th neighbour's distance (a larger
-// one costs more distances, a smaller one more searches of two or three rings of cells and
+// one costs more distances, a smaller one more searches of two rings of cells and
 // kd-tree fall-backs); ties go by index. With a `pool`, blocks of cells run on its threads: the
 // same rows.
 void all_nearest_neighbours(const PointList& points, std::size_t k, double cell, std::vector<std::uint32_t>& out,

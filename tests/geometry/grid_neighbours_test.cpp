@@ -96,7 +96,7 @@ TEST(GridNeighbours, KnnIsExactForAnyCellSize) {
   expect_knn_exact(surface, 16, 0.6);
   expect_knn_exact(surface, 16, 0.05);
   expect_knn_exact(surface, 16, 3.0);
-  // The 16th beyond the first block's reach but within two or three rings of cells.
+  // The 16th beyond the first block's reach but within two rings of cells, or beyond.
   expect_knn_exact(surface, 16, 0.3);
   expect_knn_exact(surface, 16, 0.2);
   expect_knn_exact(volume(2000, 5), 8, 0.5);
