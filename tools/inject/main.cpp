@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
     for (const std::string& w : participant.warnings()) say("warning: " + w);
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
     // More clouds outstanding than ingest's reader keeps would have a busy ingest refuse whole
-    // samples, which reliable DDS sends again and again (docs/dds.md "Back-pressure").
+    // samples, which reliable DDS sends again and again (docs/dds.md "Back-pressure without resending").
     const std::size_t history = participant.reader_history(cs::dds::Traffic::data);
     delivery_settings.max_pending = max_pending.value_or(history > 0 ? history : delivery_settings.max_pending);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
