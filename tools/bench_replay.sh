@@ -4,7 +4,9 @@
 # services to cloudshape-echo. Prints Markdown tables: how far the replay fell behind, frames
 # delivered (taken by ingest) and recognised (every object as cloudshape-recognize finds it in
 # that frame), the rate sustained, latency percentiles, and where the time went: each process's
-# CPU seconds (from /proc) and each service's stage time per message (from its log).
+# CPU seconds (from /proc) and each service's stage time per message (from its log), all of
+# them per frame beside the CPU cloudshape-recognize --threads 1 needs for the same frames in
+# one process, the loopback traffic per frame and the machine's load average.
 #
 #   tools/bench_replay.sh [--frames N] [--rate HZ] [--compression none|lz4|zstd] [--domain N] [--no-bare]
 #                         [--replicas STAGE=N]...   # as tools/launch.sh start (ingest=2: two ingest lanes)
@@ -47,6 +49,10 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib/pipeline_run.sh"
 # shellcheck source-path=SCRIPTDIR source=lib/replay_recording.sh
 source "$(dirname "${BASH_SOURCE[0]}")/lib/replay_recording.sh"
 
+# The machine's load average (1, 5, 15 min): CPU per frame is the stable figure on a shared
+# machine, rates are not.
+load() { cut -d' ' -f1-3 /proc/loadavg; }
+load_start="$(load)"
 rec="$work/replay.mcap"
 cs_replay_recording "$rec" "$frames" "$rate" "$compression"
 recorded="$(awk -v n="$frames" -v r="$rate" 'BEGIN {printf "%.1f", (n - 1) / r}')"
@@ -75,20 +81,42 @@ fi
 
 # CPU seconds (user + system) of a process so far, from /proc.
 cpu_s() { awk -v hz="$(getconf CLK_TCK)" '{print ($14 + $15) / hz}' "/proc/$1/stat" 2>/dev/null || echo 0; }
+# CPU seconds (user + system) of the children this shell waited for so far (bash's `times`,
+# run in this shell: in a pipe or $(...) it would see a subshell's children, none).
+children_cpu_s() {
+  times >"$work/times.txt"
+  tail -1 "$work/times.txt" | awk '{n = 0; for (i = 1; i <= 2; i++) {split($i, t, /[ms]/); n += t[1] * 60 + t[2]}; print n}'
+}
+# Bytes through the loopback interface so far: the traffic of this network namespace.
+loopback_bytes() { awk -F'[: ]+' '$2 == "lo" {print $3}' /proc/net/dev; }
+
+# The same frames in one process, single-threaded: the recognition's own CPU per frame, the
+# program's start-up (one frame) taken off.
+inprocess_ms="$(
+  files=()
+  for ((k = 0; k < 5; k++)); do files+=("$work"/frame{1,2,3}.pcd); done
+  ("$bin/cloudshape-recognize" --threads 1 "$work/frame1.pcd" >/dev/null; children_cpu_s) >"$work/cpu1.txt"
+  ("$bin/cloudshape-recognize" --threads 1 "$work/frame1.pcd" "${files[@]}" >/dev/null; children_cpu_s) >"$work/cpu16.txt"
+  awk -v a="$(cat "$work/cpu1.txt")" -v b="$(cat "$work/cpu16.txt")" -v n="${#files[@]}" \
+    'BEGIN {printf "%.1f", 1000 * (b - a) / n}'
+)"
 
 launch_args=("${replicas[@]}")
+lo_before="$(loopback_bytes)"
 cs_start_pipeline "$domain" "$work/results.jsonl" "$work/echo.err" --count "$frames" --timeout 900 --latency
 "$bin/cloudshape-inject" --domain "$domain" --subscribers "$subscribers" --result-timeout 300 "$rec" 2>"$work/inject.err" &
 inject_pid=$!
 helper_pids+=("$inject_pid")
 declare -A cpu=()
-names=(inject)
-# Sampled just before each process ends (inject exits once every result came; the services
-# and echo are sampled as soon as echo has printed the last result).
+names=(inject echo)
+# Sampled just before each process ends (inject and echo exit once every result came; the
+# services are sampled as soon as echo has printed the last result).
 while kill -0 "$inject_pid" 2>/dev/null; do
   # A sample taken as it exits reads nothing (0): keep the one before.
   c="$(cpu_s "$inject_pid")"
   [[ "$c" == 0 ]] || cpu[inject]="$c"
+  c="$(cpu_s "$echo_pid")"
+  [[ "$c" == 0 ]] || cpu[echo]="$c"
   sleep 0.2
 done
 wait "$inject_pid" || true
@@ -98,6 +126,7 @@ while read -r pid name; do
   cpu[$name]="$(cpu_s "$pid")"
   names+=("$name")
 done <"$CLOUDSHAPE_LOG_DIR/services.pids"
+lo_mb="$(awk -v a="$lo_before" -v b="$(loopback_bytes)" -v f="$frames" 'BEGIN {printf "%.1f", (b - a) / 1e6 / f}')"
 
 sent="$(grep -c ' sent replay.mcap#' "$work/inject.err" || true)"
 behind="$(sed -n 's/.*at most \([0-9.]*\) s behind.*/\1/p' "$work/inject.err")"
@@ -126,9 +155,11 @@ awk -v f="$frames" -v span="$recorded" -v behind="${behind:-nan}" -v sent="$sent
 echo
 printf '| process | CPU (s) | CPU per frame (ms) | stage time per message p50 / p90 (ms) | messages |\n'
 printf '|---|---|---|---|---|\n'
+total_s=0
 for name in "${names[@]}"; do
   stage="- | -"
-  if [[ "$name" != inject ]]; then
+  total_s="$(awk -v t="$total_s" -v c="${cpu[$name]:-0}" 'BEGIN {print t + c}')"
+  if [[ "$name" != inject && "$name" != echo ]]; then
     log="$CLOUDSHAPE_LOG_DIR/$name.log"
     n="$(grep -c ': done in \|: error passed on in ' "$log" || true)"
     read -r s50 s90 _ _ < <(sed -n 's/.*: \(done\|error passed on\) in \([0-9.]*\) ms.*/\2/p' "$log" | cs_percentiles)
@@ -137,3 +168,9 @@ for name in "${names[@]}"; do
   awk -v name="$name" -v c="${cpu[$name]:-0}" -v f="$frames" -v stage="$stage" \
     'BEGIN {printf "| %s | %.1f | %.1f | %s |\n", name, c, 1000 * c / f, stage}'
 done
+awk -v c="$total_s" -v f="$frames" 'BEGIN {printf "| all of them | %.1f | %.1f | - | - |\n", c, 1000 * c / f}'
+awk -v ms="$inprocess_ms" 'BEGIN {printf "| in one process (cloudshape-recognize --threads 1, the same frames) | - | %.1f | - | - |\n", ms}'
+echo
+awk -v c="$total_s" -v f="$frames" -v ms="$inprocess_ms" -v lo="$lo_mb" -v a="$load_start" -v b="$(load)" \
+  'BEGIN {printf "CPU per frame: %.1f ms for the services, inject and echo, %.1f ms in one process (%.1f ms more); loopback traffic %s MB per frame; load average (1, 5, 15 min) %s at the start, %s at the end.\n",
+          1000 * c / f, ms, 1000 * c / f - ms, lo, a, b}'

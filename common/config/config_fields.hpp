@@ -16,6 +16,7 @@ void visit_fields(InputConfig& c, F&& f) {
 template <class F>
 void visit_fields(ExecutionConfig& c, F&& f) {
   f("threads", c.threads);
+  f("retained_memory_mb", c.retained_memory_mb);
 }
 
 template <class F>

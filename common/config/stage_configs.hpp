@@ -20,6 +20,9 @@ struct InputConfig {
 // How the recognition runs, not what it finds: the answers are the same for any value.
 struct ExecutionConfig {
   std::int64_t threads = 0;  // threads of the recognition, the caller's included; 0 = one per core
+  // The services keep up to this much freed memory for the next cloud instead of returning it
+  // to the system, which would fault every page of a frame's buffers in again (0: the C library's own).
+  std::int64_t retained_memory_mb = 512;
 };
 
 struct PreprocessConfig {

@@ -155,6 +155,16 @@ fdds::DataReader* Participant::create_reader(fdds::Topic* topic, Traffic traffic
   return r;
 }
 
+std::size_t Participant::reader_history(Traffic traffic) const {
+  fdds::DataReaderQos qos;
+  if (subscriber_->get_datareader_qos_from_profile(reader_profile(traffic), qos) != ReturnCode_t::RETCODE_OK) {
+    throw DdsError(std::string("no reader profile '") + reader_profile(traffic) + "' in " + qos_file_path());
+  }
+  const std::int32_t limit =
+      qos.history().kind == fdds::KEEP_ALL_HISTORY_QOS ? qos.resource_limits().max_samples : qos.history().depth;
+  return limit > 0 ? static_cast<std::size_t>(limit) : 0;
+}
+
 void Participant::delete_writer(fdds::DataWriter* writer) {
   if (writer != nullptr) publisher_->delete_datawriter(writer);
 }

@@ -69,6 +69,12 @@ class Participant {
   void delete_writer(eprosima::fastdds::dds::DataWriter* writer);
   void delete_reader(eprosima::fastdds::dds::DataReader* reader);
 
+  // How many samples a reader of `traffic` keeps before it refuses the next one (its profile's
+  // KEEP_ALL max_samples, or its KEEP_LAST depth); 0 when its profile sets no limit. A writer
+  // that runs further ahead than this only makes a busy reader refuse samples, which a RELIABLE
+  // writer then sends again and again.
+  std::size_t reader_history(Traffic traffic) const;
+
  private:
   eprosima::fastdds::dds::Topic* topic_for(const std::string& name,
                                            eprosima::fastdds::dds::TypeSupport& type);

@@ -43,7 +43,7 @@ Options parse_options(int argc, char** argv, const std::string& name, const std:
 void set_up_logging(const Options& opt, bool verbose);
 
 // Loads --config or the default pipeline.yaml (built-in defaults when there is none), with
-// --threads over its execution.threads.
+// --threads over its execution.threads, and keeps freed memory as execution.retained_memory_mb says.
 config::PipelineConfig load_config(const Options& opt);
 
 // SIGINT / SIGTERM raise the flag; the only global state of a service.

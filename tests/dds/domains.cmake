@@ -29,7 +29,8 @@ set(CLOUDSHAPE_TEST_DOMAIN_TABLE
   ros2_fastdds 77
   ros2_bad_clouds 78
   ros2_latency 79
-  mcap_replay_start 80)
+  mcap_replay_start 80
+  mcap_replay_backpressure 81)
 
 set(_names "")
 set(_ids "")

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -23,10 +24,10 @@ namespace {
 
 constexpr std::uint64_t kSecond = 1'000'000'000;
 
-// The synthetic suite's clouds as PointCloud2 messages 0.4 s apart on /camera/points (float32
-// and float64 alternating), with one cloud on /other in between.
+// The synthetic suite's clouds as PointCloud2 messages `gap` apart (0.4 s) on /camera/points
+// (float32 and float64 alternating), with one cloud on /other in between.
 std::string write_recording(const std::string& dir, const std::vector<std::string>& clouds,
-                            const io::McapWriterOptions& options = {}) {
+                            const io::McapWriterOptions& options = {}, std::uint64_t gap = 4 * kSecond / 10) {
   const std::string path = dir + "/rec.mcap";
   io::McapWriter writer(path, options);
   const auto schema =
@@ -41,7 +42,7 @@ std::string write_recording(const std::string& dir, const std::vector<std::strin
         io::pointcloud2_to_cdr(io::encode_pointcloud2(cloud.points, cloud.grid, layout, {{50, 0}, "camera"}));
     writer.write(camera, t, t, cdr);
     if (i == 0) writer.write(other, t + kSecond / 10, t, cdr);
-    t += 4 * kSecond / 10;
+    t += gap;
   }
   writer.close();
   return path;
@@ -93,6 +94,34 @@ TEST(DdsMcapReplay, StartSeeksToAMessage) {
   EXPECT_NE(inj.err.find("sent rec.mcap#4 as cloud 1"), std::string::npos) << inj.err;
   EXPECT_EQ(inj.err.find("rec.mcap#2"), std::string::npos) << inj.err;
   EXPECT_EQ(inj.err.find("no usable index"), std::string::npos) << inj.err;
+  ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
+  expect_same_results(expected, p.echo_lines());
+  p.stop_services();
+}
+
+// A recording far faster than the services (24 clouds 1 ms apart): inject holds back at the
+// raw-cloud readers' history (8 in qos.xml) instead of running ahead of a busy ingest, which would
+// then refuse samples that DDS sends again and again; every cloud still gives recognize's result.
+TEST(DdsMcapReplay, AReplayFasterThanTheServicesWaitsAtTheReadersHistory) {
+  Pipeline p("mcap_replay_backpressure", domains::mcap_replay_backpressure);
+  const std::vector<std::string> suite = synthetic_clouds(p.dir() + "/clouds", 8000);
+  std::vector<std::string> clouds;
+  for (std::size_t i = 0; clouds.size() < 24; ++i) clouds.push_back(suite[i % suite.size()]);
+  const std::string rec = write_recording(p.dir(), clouds, {}, kSecond / 1000);
+  const std::vector<std::string> expected = recognize({rec});
+  ASSERT_EQ(expected.size(), 25u);  // with the one on /other
+
+  p.start_echo(25);
+  for (const std::string& s : kStages) p.start_service(s);
+  const ProcessResult inj = p.inject({rec});
+  EXPECT_EQ(inj.exit_code, 0) << inj.err;
+  std::smatch most_pending;
+  ASSERT_TRUE(std::regex_search(inj.err, most_pending, std::regex("at most ([0-9]+) awaiting their result"))) << inj.err;
+  const int most = std::stoi(most_pending[1]);
+  EXPECT_LE(most, 8) << inj.err;
+  EXPECT_GE(most, 2) << "the replay never ran ahead of the services: " << inj.err;
+  EXPECT_NE(inj.err.find("(--max-pending 8)"), std::string::npos) << inj.err;
+  EXPECT_EQ(inj.err.find("sending it again"), std::string::npos) << inj.err;
   ASSERT_EQ(p.wait_echo(), 0) << read_text(p.log_path("echo"));
   expect_same_results(expected, p.echo_lines());
   p.stop_services();

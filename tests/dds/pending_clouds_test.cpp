@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <thread>
+
 namespace cloudshape::inject {
 namespace {
 using namespace std::chrono_literals;
@@ -41,6 +43,26 @@ TEST(InjectPendingClouds, OnlyTheSameSourceCompletesACloud) {
   PendingClouds pending;
   pending.sent(cloud(5, Clock::now()));
   pending.complete(5, "other.pcd");  // another injector's cloud 5
+  EXPECT_EQ(pending.size(), 1u);
+}
+
+// The sender waits for room; a result makes room at once, not at the end of the wait.
+TEST(InjectPendingClouds, AResultWakesASenderWaitingForRoom) {
+  PendingClouds pending;
+  pending.sent(cloud(1, Clock::now()));
+  pending.sent(cloud(2, Clock::now()));
+  EXPECT_TRUE(pending.wait_below(3, 0s));
+  EXPECT_FALSE(pending.wait_below(2, 50ms));
+  const auto started = Clock::now();
+  std::thread result([&] {
+    std::this_thread::sleep_for(100ms);
+    pending.complete(1, "c.pcd");
+  });
+  EXPECT_TRUE(pending.wait_below(2, 30s));
+  const auto waited = Clock::now() - started;
+  result.join();
+  EXPECT_GE(waited, 90ms);
+  EXPECT_LT(waited, 20s) << "woken by the timeout, not by the result";
   EXPECT_EQ(pending.size(), 1u);
 }
 

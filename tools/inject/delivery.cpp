@@ -2,6 +2,7 @@
 // raw-cloud topic, and sent again while its result is overdue.
 #include "delivery.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <thread>
@@ -43,12 +44,13 @@ Delivery::Delivery(dds::Participant& participant, RawWriter& writer, const Deliv
 
 bool Delivery::send(const PendingCloud& cloud, const FileCloud& file) {
   if (tracked()) {
-    while (pending_.size() >= settings_.max_pending && !stop_) {
+    // Woken by the result that makes room, so the wait adds no polling delay to the replay.
+    while (!pending_.wait_below(settings_.max_pending, std::chrono::milliseconds(100)) && !stop_) {
       if (!resend_overdue()) return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
     if (!resend_overdue()) return false;
     pending_.sent(cloud);  // before the write: its result may come back at once
+    most_pending_ = std::max(most_pending_, pending_.size());
   }
   return publish(cloud, file);
 }

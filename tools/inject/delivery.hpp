@@ -35,7 +35,10 @@ struct DeliverySettings {
   int subscribers = 1;           // ingest readers to wait for before each write
   double resend_after_s = 10;    // 0: send once, do not watch results
   double result_timeout_s = 120; // give up after this long without a result
-  std::size_t max_pending = 256; // clouds without result before send() waits
+  // Clouds without result before send() waits. inject sets it to the raw-cloud readers'
+  // history (Participant::reader_history) unless told otherwise: a reader never holds more
+  // than it keeps, so a busy ingest never refuses a 3 MB sample that DDS would send again.
+  std::size_t max_pending = 8;
 };
 
 class Delivery {
@@ -56,6 +59,10 @@ class Delivery {
   // True when a cloud could not be read again to be sent again (its file went away).
   bool lost_a_file() const { return lost_a_file_; }
 
+  // The most clouds that were awaiting their result at once (each cloud counted as it is sent).
+  std::size_t most_pending() const { return most_pending_; }
+  std::size_t max_pending() const { return settings_.max_pending; }
+
  private:
   bool tracked() const { return watch_.has_value(); }
   bool resend_overdue();
@@ -68,6 +75,7 @@ class Delivery {
   PendingClouds pending_;
   std::optional<ResultWatch> watch_;
   bool lost_a_file_ = false;
+  std::size_t most_pending_ = 0;
 };
 
 }  // namespace cloudshape::inject

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -98,7 +99,10 @@ int main(int argc, char** argv) {
   app.add_option("--result-timeout", delivery_settings.result_timeout_s,
                  "give up waiting for the outstanding results after this many seconds without one (default 120)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--max-pending", delivery_settings.max_pending, "clouds sent but without result before sending waits (default 256)")
+  std::optional<std::size_t> max_pending;
+  app.add_option("--max-pending", max_pending,
+                 "clouds sent but without result before sending waits (default: the raw-cloud readers' "
+                 "history, qos.xml cloudshape_data_reader max_samples: 8)")
       ->check(CLI::PositiveNumber);
   app.add_option("files", args, "cloud files, .mcap recordings, or folders of them")->required();
   try {
@@ -121,6 +125,10 @@ int main(int argc, char** argv) {
     cs::dds::Participant participant = cs::dds::open_participant(participant_args, kTool);
     for (const std::string& w : participant.warnings()) say("warning: " + w);
     cs::inject::RawWriter writer(participant, cs::dds::topics::raw_cloud);
+    // More clouds outstanding than ingest's reader keeps would have a busy ingest refuse whole
+    // samples, which reliable DDS sends again and again (docs/dds.md "Back-pressure without resending").
+    const std::size_t history = participant.reader_history(cs::dds::Traffic::data);
+    delivery_settings.max_pending = max_pending.value_or(history > 0 ? history : delivery_settings.max_pending);
     if (!writer.wait_for_readers(delivery_settings.subscribers, std::chrono::milliseconds(static_cast<long>(wait_s * 1000)),
                                  &g_stop)) {
       say("no subscriber on " + std::string(cs::dds::topics::raw_cloud.name) + " after " +
@@ -221,10 +229,15 @@ int main(int argc, char** argv) {
     }
     // Let the subscribers acknowledge everything before the participant goes away.
     if (!writer.wait_for_acknowledgments(std::chrono::seconds(120))) say("not every cloud was acknowledged");
-    char summary[128];
+    char summary[192];
     std::snprintf(summary, sizeof summary, "sent %zu cloud(s) in %.3f s (%.2f clouds/s)", sent, seconds,
                   sent > 1 ? static_cast<double>(sent - 1) / seconds : 0.0);
-    say(summary);
+    std::string line = summary;
+    if (delivery_settings.resend_after_s > 0) {
+      line += ", at most " + std::to_string(delivery.most_pending()) + " awaiting their result at once (--max-pending " +
+              std::to_string(delivery.max_pending()) + ")";
+    }
+    say(line);
     return status;
   } catch (const std::exception& e) {
     say(e.what());

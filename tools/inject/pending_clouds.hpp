@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -35,7 +36,16 @@ class PendingClouds {
   void complete(std::uint64_t id, const std::string& source) {
     std::lock_guard<std::mutex> lock(mutex_);
     const auto it = clouds_.find(id);
-    if (it != clouds_.end() && it->second.source == source) clouds_.erase(it);
+    if (it != clouds_.end() && it->second.source == source) {
+      clouds_.erase(it);
+      completed_.notify_all();
+    }
+  }
+
+  // Waits until fewer than `limit` clouds are pending or `timeout` passed; true when fewer.
+  bool wait_below(std::size_t limit, Clock::duration timeout) const {
+    std::unique_lock<std::mutex> lock(mutex_);
+    return completed_.wait_for(lock, timeout, [&] { return clouds_.size() < limit; });
   }
 
   // The cloud sent longest ago, if that was at least `after` ago, marked as sent again now
@@ -66,6 +76,7 @@ class PendingClouds {
 
  private:
   mutable std::mutex mutex_;
+  mutable std::condition_variable completed_;
   std::map<std::uint64_t, PendingCloud> clouds_;
 };
 
