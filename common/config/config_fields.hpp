@@ -119,6 +119,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("face_slab", c.face_slab);
   f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
+  f("inside_view_share", c.inside_view_share);
+  f("container_rim_quantile", c.container_rim_quantile);
   f("cylinder_refine_band", c.cylinder_refine_band);
   f("cylinder_refine_iterations", c.cylinder_refine_iterations);
   f("cap_circle_agreement", c.cap_circle_agreement);

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "geometry/oriented_box.hpp"
+#include "pipeline/container.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -76,7 +77,8 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
-                          double resolution, const config::SolveConfig& cfg) {
+                          double resolution, const config::SolveConfig& cfg,
+                          const std::optional<Point>& viewpoint) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -93,6 +95,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   double best = 0.0;
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
+    if (solid && viewpoint && seen_from_inside(cloud, *solid, *viewpoint, cfg)) solid = container_of_hollow(cloud, *solid, cfg);
     if (!solid || !plausible(*solid, diameter, cfg.max_size_ratio)) continue;
     const Verification v =
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
