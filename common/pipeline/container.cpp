@@ -5,29 +5,41 @@
 
 namespace cloudshape::pipeline {
 
-bool seen_from_inside(const PointList& cloud, const FittedSolid& sphere, const Point& viewpoint,
+bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Point& viewpoint, double step,
                       const config::SolveConfig& cfg) {
-  if (cloud.empty() || sphere.shape != Shape::sphere) return false;
-  std::size_t away = 0;
-  for (const Point& p : cloud)
-    if ((p - sphere.center).dot(viewpoint - p) < 0.0) ++away;
-  return static_cast<double>(away) > cfg.inside_view_share * static_cast<double>(cloud.size());
+  const bool round = solid.shape == Shape::sphere || solid.shape == Shape::cone || solid.shape == Shape::frustum;
+  if (cloud.empty() || !round || !solid.signed_distance || !(step > 0.0)) return false;
+  const std::size_t stride = std::max<std::size_t>(1, cloud.size() / std::max<std::int64_t>(1, cfg.verify_samples));
+  std::size_t away = 0, seen = 0;
+  for (std::size_t i = 0; i < cloud.size(); i += stride, ++seen) {
+    const Point& p = cloud[i];
+    Eigen::Vector3d gradient;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d e = step * Eigen::Vector3d::Unit(k);
+      gradient[k] = solid.signed_distance(p + e) - solid.signed_distance(p - e);
+    }
+    if (gradient.dot(viewpoint - p) < 0.0) ++away;
+  }
+  return static_cast<double>(away) > cfg.inside_view_share * static_cast<double>(seen);
 }
 
-std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& sphere,
+std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& hollow,
                                                const config::SolveConfig& cfg) {
-  if (cloud.size() < 4 || sphere.dimensions.empty()) return std::nullopt;
+  if (cloud.size() < 4 || !hollow.signed_distance) return std::nullopt;
   Point centroid = Point::Zero();
   for (const Point& p : cloud) centroid += p;
   centroid /= static_cast<double>(cloud.size());
-  const Eigen::Vector3d towards_floor = centroid - sphere.center;
-  if (!(towards_floor.norm() > 0.0)) return std::nullopt;
-  const Eigen::Vector3d axis = towards_floor.normalized();
+  Eigen::Vector3d axis = hollow.axes.row(0).transpose();
+  if (hollow.shape == Shape::sphere) {
+    const Eigen::Vector3d towards_floor = centroid - hollow.center;
+    if (!(towards_floor.norm() > 0.0)) return std::nullopt;
+    axis = towards_floor.normalized();
+  }
   std::vector<double> radial, along;
   radial.reserve(cloud.size());
   along.reserve(cloud.size());
   for (const Point& p : cloud) {
-    const Eigen::Vector3d d = p - sphere.center;
+    const Eigen::Vector3d d = p - hollow.center;
     along.push_back(d.dot(axis));
     radial.push_back((d - along.back() * axis).norm());
   }
@@ -43,16 +55,16 @@ std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const Fit
   FittedSolid out;
   out.shape = Shape::cylinder;
   out.dimensions = {{"radius", radius}, {"height", hi - lo}};
-  out.center = sphere.center + 0.5 * (lo + hi) * axis;
+  out.center = hollow.center + 0.5 * (lo + hi) * axis;
   out.axes = detail::frame_from_axis(axis);
-  const Point c = out.center, hollow = sphere.center;
-  const double height = hi - lo, hollow_radius = sphere.dimensions.front().second;
-  out.signed_distance = [c, axis, radius, height, hollow, hollow_radius](const Point& p) {
+  const Point c = out.center;
+  const double height = hi - lo;
+  out.signed_distance = [c, axis, radius, height, inside = hollow.signed_distance](const Point& p) {
     const Eigen::Vector3d d = p - c;
     const double h = d.dot(axis);
     const double wall = std::max((d - h * axis).norm() - radius, std::abs(h) - 0.5 * height);
     if (wall >= 0.0) return wall;
-    return std::max(wall, -std::abs((p - hollow).norm() - hollow_radius));
+    return std::max(wall, -std::abs(inside(p)));
   };
   return out;
 }

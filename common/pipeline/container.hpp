@@ -1,5 +1,5 @@
 // A round surface seen from its hollow side (a bowl seen over its rim) is the inside of a
-// container, never a sphere seen from outside: the container's envelope cylinder replaces it.
+// container, never a convex solid seen from outside: the container's envelope cylinder replaces it.
 #pragma once
 
 #include <optional>
@@ -9,16 +9,17 @@
 
 namespace cloudshape::pipeline {
 
-// True when most points of `sphere`'s surface face away from `viewpoint`: the sensor looks at
-// its inside. cfg.inside_view_share is that share.
-bool seen_from_inside(const PointList& cloud, const FittedSolid& sphere, const Point& viewpoint,
+// True for a sphere, cone or frustum most of whose points (cfg.inside_view_share) have the
+// solid's outward normal (its signed distance's gradient, by differences over `step`) facing
+// away from `viewpoint`: the sensor looks at its inside.
+bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Point& viewpoint, double step,
                       const config::SolveConfig& cfg);
 
-// The container whose hollow is `sphere`'s cap: the cylinder about the axis from the sphere's
-// centre through the points' centroid, as wide as the rim (cfg.container_rim_quantile of the
-// points' distances from the axis) and as deep as the points reach along the axis. Its points
-// are explained by the hollow or the wall (its signed distance is the nearer of the two inside).
-std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& sphere,
+// The container whose hollow is `hollow`'s surface: the cylinder about the hollow's axis (a
+// sphere's: from its centre through the points' centroid), as wide as the rim
+// (cfg.container_rim_quantile of the points' distances from the axis) and as deep as the points
+// reach along it. Points are explained by the hollow or the wall (inside, the nearer of the two).
+std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& hollow,
                                                const config::SolveConfig& cfg);
 
 }  // namespace cloudshape::pipeline

@@ -95,7 +95,6 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   double best = 0.0;
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
-    if (solid && viewpoint && seen_from_inside(cloud, *solid, *viewpoint, cfg)) solid = container_of_hollow(cloud, *solid, cfg);
     if (!solid || !plausible(*solid, diameter, cfg.max_size_ratio)) continue;
     const Verification v =
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
@@ -118,6 +117,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
         fitted.emplace_back(std::move(*second), v);
         chosen = &fitted.back();
       }
+    }
+  }
+  // The chosen round solid seen from its hollow side is the inside of a container, which is what
+  // the points show (container.hpp).
+  if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
+    auto container = container_of_hollow(cloud, chosen->first, cfg);
+    if (container && plausible(*container, diameter, cfg.max_size_ratio)) {
+      const Verification v = verify(cloud, *container, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+      fitted.emplace_back(std::move(*container), v);
+      chosen = &fitted.back();
     }
   }
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
