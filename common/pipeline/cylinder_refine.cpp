@@ -1,5 +1,6 @@
 #include "pipeline/cylinder_refine.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "geometry/plane.hpp"
@@ -48,6 +49,28 @@ SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std:
     if (step.tail<3>().norm() < 1e-3 * band && step.head<2>().norm() < 1e-6) break;
   }
   return cur;
+}
+
+double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
+                        double band) {
+  constexpr int kSectors = 36;
+  constexpr double kPi = 3.14159265358979323846;
+  Eigen::Vector3d u, v;
+  geometry::plane_basis(c.axis, u, v);
+  std::array<std::size_t, kSectors> count{};
+  std::size_t near = 0;
+  for (std::uint32_t i : side) {
+    const Eigen::Vector3d d = cloud[i] - c.on_axis;
+    const Eigen::Vector3d q = d - d.dot(c.axis) * c.axis;
+    if (std::abs(q.norm() - c.radius) > band) continue;
+    const double a = std::atan2(q.dot(v), q.dot(u)) + kPi;
+    ++count[static_cast<std::size_t>(std::min(kSectors - 1.0, a / (2.0 * kPi) * kSectors))];
+    ++near;
+  }
+  int covered = 0;
+  for (std::size_t n : count)
+    if (near > 0 && static_cast<double>(n) >= 0.01 * static_cast<double>(near)) ++covered;
+  return 360.0 / kSectors * covered;
 }
 
 }  // namespace cloudshape::pipeline::detail

@@ -22,4 +22,10 @@ struct SideCylinder {
 SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std::uint32_t>& side,
                                   const SideCylinder& start, double band, int iterations);
 
+// Degrees of arc around `c`'s axis the indexed points within `band` of its side cover, in 10
+// degree sectors each holding at least 1% of them: a side seen over a narrow arc (a flat face
+// tangent to the cylinder) is no evidence of a curved one.
+double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
+                        double band);
+
 }  // namespace cloudshape::pipeline::detail

@@ -15,9 +15,9 @@ double cos_parallel(const SolveInput& in) { return std::cos(in.cfg.parallel_degr
 // The cylinder around `axis`: radius from the side (the points off every flat face across the
 // axis), height from `caps` and the extreme points along the axis. With a circular cap's outline
 // the axis passes through its centre, and only the radius is taken from the side: a narrow band
-// of side seen from above is too short an arc to place the axis. An axis from the side's normals
-// alone (`free_axis`) is refined with the circle on the side points: normals of a small or noisy
-// side place it a few degrees off, and a tilted axis explains a band of the side only.
+// of side seen from above is too short an arc to place the axis. The second chance's axis, from
+// the side's normals alone (`free_axis`), is refined with the circle on the side points: normals
+// of a small or noisy side place it a few degrees off, and a tilted axis explains a band only.
 std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                                            const std::vector<const DetectedPlane*>& caps,
                                            const Eigen::Vector3d& start_axis, bool free_axis,
@@ -39,6 +39,10 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
       const detail::SideCylinder refined = detail::refine_side_cylinder(
           in.cloud, side, {circle->center, axis, circle->radius}, in.cfg.cylinder_refine_band * in.resolution,
           static_cast<int>(in.cfg.cylinder_refine_iterations));
+      // A flat face tangent to the cylinder fits it over a narrow arc only.
+      if (detail::side_arc_degrees(in.cloud, side, refined, in.cfg.inlier_distance * in.resolution) <
+          in.cfg.min_side_arc_degrees)
+        return std::nullopt;
       axis = refined.axis;
       circle = geometry::Circle3{refined.on_axis, axis, refined.radius};
     }
@@ -141,7 +145,7 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
   const Eigen::Vector3d axis = caps.empty()
                                    ? detail::axis_from_normals(in.cloud_normals())
                                    : caps[0]->plane.normal;
-  return fit_around_axis(in, faces, caps, axis, caps.empty());
+  return fit_around_axis(in, faces, caps, axis, false);
 }
 
 std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) {

@@ -109,11 +109,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     if (f.second.explained < best - cfg.preferred_margin) continue;
     if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
   }
+  // The second chance fits axis, position and radius to the points alone, free of any face or
+  // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction).
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
     if (auto second = fit_cylinder_from_side_normals(input); second && plausible(*second, diameter, cfg.max_size_ratio)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-      if (v.explained >= cfg.min_inlier_fraction && (!chosen || v.explained > chosen->second.explained)) {
+      if (v.explained >= std::max(cfg.min_inlier_fraction, cfg.side_fit_min_inlier_fraction) &&
+          (!chosen || v.explained > chosen->second.explained)) {
         fitted.emplace_back(std::move(*second), v);
         chosen = &fitted.back();
       }
