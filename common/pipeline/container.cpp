@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/pca.hpp"
+
 namespace cloudshape::pipeline {
 
 bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Point& viewpoint, double step,
@@ -26,15 +28,10 @@ bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Po
 std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& hollow,
                                                const config::SolveConfig& cfg) {
   if (cloud.size() < 4 || !hollow.signed_distance) return std::nullopt;
-  Point centroid = Point::Zero();
-  for (const Point& p : cloud) centroid += p;
-  centroid /= static_cast<double>(cloud.size());
+  // A sphere has no axis of its own: the hollow of a bowl is wider than deep, so its thinnest
+  // direction is the axis (the way from its centre to the points' centroid leans towards the side seen).
   Eigen::Vector3d axis = hollow.axes.row(0).transpose();
-  if (hollow.shape == Shape::sphere) {
-    const Eigen::Vector3d towards_floor = centroid - hollow.center;
-    if (!(towards_floor.norm() > 0.0)) return std::nullopt;
-    axis = towards_floor.normalized();
-  }
+  if (hollow.shape == Shape::sphere) axis = geometry::compute_pca(cloud).eigenvectors.col(0).normalized();
   std::vector<double> radial, along;
   radial.reserve(cloud.size());
   along.reserve(cloud.size());

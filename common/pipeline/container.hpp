@@ -16,7 +16,7 @@ bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Po
                       const config::SolveConfig& cfg);
 
 // The container whose hollow is `hollow`'s surface: the cylinder about the hollow's axis (a
-// sphere's: from its centre through the points' centroid), as wide as the rim
+// sphere's: the points' thinnest direction), as wide as the rim
 // (cfg.container_rim_quantile of the points' distances from the axis) and as deep as the points
 // reach along it. Points are explained by the hollow or the wall (inside, the nearer of the two).
 std::optional<FittedSolid> container_of_hollow(const PointList& cloud, const FittedSolid& hollow,
