@@ -71,5 +71,23 @@ TEST(CylinderRefine, NoPointsNearTheStartKeepIt) {
   EXPECT_EQ(got.radius, start.radius);
 }
 
+// The front half covers about 180 degrees of arc; a flat face tangent to the cylinder (the same
+// can's radius, points spread over a width of two radii) meets its side over a narrow arc only.
+TEST(CylinderRefine, HalfASideCoversHalfTheArcATangentFaceLittle) {
+  const Can can;
+  const PointList half = front_half(can, 4000, 0.0);
+  const SideCylinder truth{can.base, can.axis, can.radius};
+  const double band = 2.0 * 0.0015;
+  EXPECT_NEAR(side_arc_degrees(half, all(half), truth, band), 180.0, 20.0);
+  const Eigen::Vector3d normal = can.axis.unitOrthogonal();
+  const Eigen::Vector3d across = can.axis.cross(normal);
+  PointList face;
+  for (int i = 0; i < 60; ++i)
+    for (int j = 0; j < 60; ++j)
+      face.push_back(can.base + can.radius * normal + (i / 59.0) * can.height * can.axis +
+                     (j / 59.0 - 0.5) * 2.0 * can.radius * across);
+  EXPECT_LT(side_arc_degrees(face, all(face), truth, band), 90.0);
+}
+
 }  // namespace
 }  // namespace cloudshape::pipeline::detail
