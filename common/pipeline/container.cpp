@@ -11,6 +11,8 @@ bool seen_from_inside(const PointList& cloud, const FittedSolid& solid, const Po
                       const config::SolveConfig& cfg) {
   const bool round = solid.shape == Shape::sphere || solid.shape == Shape::cone || solid.shape == Shape::frustum;
   if (cloud.empty() || !round || !solid.signed_distance || !(step > 0.0)) return false;
+  // A sensor looks into a hollow from outside the solid it belongs to (over a bowl's rim).
+  if (solid.signed_distance(viewpoint) <= 0.0) return false;
   const std::size_t stride = std::max<std::size_t>(1, cloud.size() / std::max<std::int64_t>(1, cfg.verify_samples));
   std::size_t away = 0, seen = 0;
   for (std::size_t i = 0; i < cloud.size(); i += stride, ++seen) {

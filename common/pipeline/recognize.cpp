@@ -48,8 +48,6 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
   // Objects are independent and every stage seeds its own RANSAC: each runs alone, its result
   // in its own slot, and the slots are read in object order. A stage's time is summed over the
   // objects (with several threads more than the wall clock it took).
-  // An organized cloud is a range image in its sensor's frame: the sensor sits at the origin.
-  const std::optional<Point> viewpoint = grid.organized() ? std::optional<Point>(Point::Zero()) : std::nullopt;
   std::vector<ObjectResult> objects(clouds.objects.size());
   std::vector<StageTimings> times(clouds.objects.size());
   parallel::for_blocks(pool, clouds.objects.size(), 1, [&](std::size_t begin, std::size_t) {
@@ -62,7 +60,7 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     t.keypoints_ms = object_clock.lap_ms();
     const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
     t.classify_ms = object_clock.lap_ms();
-    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve, viewpoint);
+    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve);
     objects[begin].point_indices = o.raw_indices;
     t.solve_ms = object_clock.lap_ms();
   });
