@@ -120,6 +120,12 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("face_slab", c.face_slab);
   f("open_end_quantile", c.open_end_quantile);
   f("rim_distance", c.rim_distance);
+  f("inside_view_share", c.inside_view_share);
+  f("container_rim_quantile", c.container_rim_quantile);
+  f("side_fit_min_inlier_fraction", c.side_fit_min_inlier_fraction);
+  f("min_side_arc_degrees", c.min_side_arc_degrees);
+  f("cylinder_refine_band", c.cylinder_refine_band);
+  f("cylinder_refine_iterations", c.cylinder_refine_iterations);
   f("cap_circle_agreement", c.cap_circle_agreement);
   f("min_side_share", c.min_side_share);
   f("max_size_ratio", c.max_size_ratio);

@@ -129,6 +129,12 @@ struct SolveConfig {
   double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
   double cap_circle_agreement = 0.1;     // the side's own circle is kept when centre and radius lie within this share of the cap circle's radius of it
   double min_side_share = 0.05;          // a cylinder with a circular cap takes its radius from the side when this share of the points is on it
+  double side_fit_min_inlier_fraction = 0.7;  // the cylinder from side normals alone (the second chance) is reported only if it explains this share
+  double min_side_arc_degrees = 90.0;    // ... and only if its side's explained points cover this arc around the axis
+  double cylinder_refine_band = 6.0;     // a cylinder axis from side normals is refined on side points within this (resolutions) of its side ...
+  std::int64_t cylinder_refine_iterations = 15;  // ... in at most this many Gauss-Newton steps (0: the normals' axis as it is)
+  double inside_view_share = 0.5;        // a sphere, cone or frustum whose surface mostly (this share of the points) faces away from the sensor is seen from its hollow side: a container
+  double container_rim_quantile = 0.995;  // ... whose envelope cylinder reaches this quantile of the points' distances from its axis and along it
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "geometry/circle.hpp"
+#include "pipeline/cylinder_refine.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -14,11 +15,14 @@ double cos_parallel(const SolveInput& in) { return std::cos(in.cfg.parallel_degr
 // The cylinder around `axis`: radius from the side (the points off every flat face across the
 // axis), height from `caps` and the extreme points along the axis. With a circular cap's outline
 // the axis passes through its centre, and only the radius is taken from the side: a narrow band
-// of side seen from above is too short an arc to place the axis.
+// of side seen from above is too short an arc to place the axis. The second chance's axis, from
+// the side's normals alone (`free_axis`), is refined with the circle on the side points: normals
+// of a small or noisy side place it a few degrees off, and a tilted axis explains a band only.
 std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                                            const std::vector<const DetectedPlane*>& caps,
-                                           const Eigen::Vector3d& axis,
+                                           const Eigen::Vector3d& start_axis, bool free_axis,
                                            const FaceOutline* cap_outline = nullptr) {
+  Eigen::Vector3d axis = start_axis;
   // Every flat face across the axis is cap-like (a recessed lid, the top of a rim): none
   // of them belongs to the side the radius is fitted on.
   std::vector<const DetectedPlane*> across;
@@ -31,6 +35,17 @@ std::optional<FittedSolid> fit_around_axis(const SolveInput& in, const std::vect
     for (std::uint32_t i : side) centroid += in.cloud[i];
     centroid /= static_cast<double>(side.size());
     circle = geometry::fit_circle_in_plane(in.cloud, side, centroid, axis);
+    if (circle && free_axis && !cap_outline) {
+      const detail::SideCylinder refined = detail::refine_side_cylinder(
+          in.cloud, side, {circle->center, axis, circle->radius}, in.cfg.cylinder_refine_band * in.resolution,
+          static_cast<int>(in.cfg.cylinder_refine_iterations));
+      // A flat face tangent to the cylinder fits it over a narrow arc only.
+      if (detail::side_arc_degrees(in.cloud, side, refined, in.cfg.inlier_distance * in.resolution) <
+          in.cfg.min_side_arc_degrees)
+        return std::nullopt;
+      axis = refined.axis;
+      circle = geometry::Circle3{refined.on_axis, axis, refined.radius};
+    }
   }
   if (cap_outline) {
     // The side's own circle where it agrees with the cap's (a wide arc places it best), else the
@@ -117,7 +132,7 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
         caps.push_back(f);
         break;
       }
-    return fit_around_axis(in, faces, caps, cap->plane.normal, &cls.cap_outline);
+    return fit_around_axis(in, faces, caps, cap->plane.normal, false, &cls.cap_outline);
   }
   // Caps: two faces facing opposite ways; else the largest face; else no cap is seen and
   // the side's normals give the axis.
@@ -130,11 +145,11 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in) {
   const Eigen::Vector3d axis = caps.empty()
                                    ? detail::axis_from_normals(in.cloud_normals())
                                    : caps[0]->plane.normal;
-  return fit_around_axis(in, faces, caps, axis);
+  return fit_around_axis(in, faces, caps, axis, false);
 }
 
 std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) {
-  return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()));
+  return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()), true);
 }
 
 }  // namespace cloudshape::pipeline

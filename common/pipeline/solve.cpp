@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "geometry/oriented_box.hpp"
+#include "pipeline/container.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -76,7 +77,8 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
-                          double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree) {
+                          double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
+                          const std::optional<Point>& viewpoint) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -108,14 +110,27 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     if (f.second.explained < best - cfg.preferred_margin) continue;
     if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
   }
+  // The second chance fits axis, position and radius to the points alone, free of any face or
+  // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction).
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
     if (auto second = fit_cylinder_from_side_normals(input); second && plausible(*second, diameter, cfg.max_size_ratio)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-      if (v.explained >= cfg.min_inlier_fraction && (!chosen || v.explained > chosen->second.explained)) {
+      if (v.explained >= std::max(cfg.min_inlier_fraction, cfg.side_fit_min_inlier_fraction) &&
+          (!chosen || v.explained > chosen->second.explained)) {
         fitted.emplace_back(std::move(*second), v);
         chosen = &fitted.back();
       }
+    }
+  }
+  // The chosen round solid seen from its hollow side is the inside of a container, which is what
+  // the points show (container.hpp).
+  if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
+    auto container = container_of_hollow(cloud, chosen->first, cfg);
+    if (container && plausible(*container, diameter, cfg.max_size_ratio)) {
+      const Verification v = verify(cloud, *container, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+      fitted.emplace_back(std::move(*container), v);
+      chosen = &fitted.back();
     }
   }
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {

@@ -2,6 +2,8 @@
 // candidate verified against the points; confidence from how well it explains them.
 #pragma once
 
+#include <optional>
+
 #include "config/stage_configs.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
@@ -14,10 +16,13 @@ namespace cloudshape::pipeline {
 // cfg.inlier_distance resolutions of its surface, and reports the class the key-points
 // chose unless another solid explains clearly more. `unknown` with a reason when none
 // explains at least cfg.min_inlier_fraction of the points.
-// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages).
+// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages). With the
+// sensor's `viewpoint` known (organized clouds), a sphere seen from its hollow side is a
+// container's inside (container.hpp).
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,
-                          const geometry::KdTree* tree = nullptr);
+                          const geometry::KdTree* tree = nullptr,
+                          const std::optional<Point>& viewpoint = std::nullopt);
 
 }  // namespace cloudshape::pipeline

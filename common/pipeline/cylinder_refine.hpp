@@ -1,0 +1,31 @@
+// A cylinder's axis, axis point and radius refined together on its side points: a robust
+// Gauss-Newton fit of the point-to-side distance, for sides whose axis came from normals alone.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/point_cloud.hpp"
+
+namespace cloudshape::pipeline::detail {
+
+struct SideCylinder {
+  Point on_axis = Point::Zero();
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();  // unit
+  double radius = 0.0;
+};
+
+// Refines `start` on the indexed points. Each step weighs a point by Tukey's biweight of its
+// distance from the side with scale `band` (points farther count nothing: caps, rims, clutter),
+// so a start within about `band` of the side converges to it. Returns `start` when too few points
+// are near it or the steps do not settle.
+SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std::uint32_t>& side,
+                                  const SideCylinder& start, double band, int iterations);
+
+// Degrees of arc around `c`'s axis the indexed points within `band` of its side cover, in 10
+// degree sectors each holding at least 1% of them: a side seen over a narrow arc (a flat face
+// tangent to the cylinder) is no evidence of a curved one.
+double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
+                        double band);
+
+}  // namespace cloudshape::pipeline::detail
