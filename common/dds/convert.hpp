@@ -2,6 +2,7 @@
 // Exact both ways: every value travels as float64, so core -> IDL -> core is the identity.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "cloudshape.h"
@@ -28,6 +29,10 @@ msg::CloudData to_msg(const pipeline::PreprocessedCloud& cloud, std::size_t poin
 msg::CloudData to_msg(const PointList& object, const pipeline::PreprocessedCloud& cloud,
                       std::size_t points_in);
 pipeline::PreprocessedCloud from_msg(const msg::CloudData& cloud);
+// The sensor's position, carried with every object so the solver sees what recognize_cloud sees
+// (a container seen into needs it).
+void set_viewpoint(msg::CloudData& cloud, const std::optional<Point>& viewpoint);
+std::optional<Point> viewpoint_of(const msg::CloudData& cloud);
 
 msg::PlaneSegmentation to_msg(const pipeline::PlaneSegmentation& planes);
 pipeline::PlaneSegmentation from_msg(const msg::PlaneSegmentation& planes);

@@ -1,4 +1,5 @@
 // Clouds, timings and final results across the wire.
+#include <array>
 #include <stdexcept>
 
 #include "dds/convert.hpp"
@@ -52,6 +53,17 @@ msg::CloudData to_msg(const PointList& object, const pipeline::PreprocessedCloud
   m.voxel_size(cloud.voxel_size);
   m.outliers_removed(cloud.outliers_removed);
   return m;
+}
+
+void set_viewpoint(msg::CloudData& m, const std::optional<Point>& viewpoint) {
+  m.viewpoint_known(viewpoint.has_value());
+  m.viewpoint(viewpoint ? std::array<double, 3>{viewpoint->x(), viewpoint->y(), viewpoint->z()}
+                        : std::array<double, 3>{0.0, 0.0, 0.0});
+}
+
+std::optional<Point> viewpoint_of(const msg::CloudData& m) {
+  if (!m.viewpoint_known()) return std::nullopt;
+  return Point(m.viewpoint()[0], m.viewpoint()[1], m.viewpoint()[2]);
 }
 
 pipeline::PreprocessedCloud from_msg(const msg::CloudData& m) {

@@ -10,6 +10,7 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
                            const config::SegmentConfig& seg, parallel::ThreadPool* pool) {
   ObjectClouds out;
   segment::SceneSegmentation scene = segment::segment_scene(raw, grid, seg, pool);
+  out.viewpoint = scene.viewpoint;
   if (scene.objects.empty() && !raw.empty()) {
     scene.objects.emplace_back(raw.size());
     std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "config/stage_configs.hpp"
@@ -25,6 +26,7 @@ struct ObjectClouds {
   // and voxel_size those of the largest object, outliers_removed the total.
   PreprocessedCloud scene;
   std::vector<ObjectCloud> objects;  // largest first
+  std::optional<Point> viewpoint;    // the sensor's position, when the layout tells it
 };
 
 // segment_scene, then preprocess_cloud per object. A cloud in which segmentation finds no

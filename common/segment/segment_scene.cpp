@@ -40,6 +40,7 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
                          ? build_organized_graph(points, grid, cfg, pool)
                          : build_voxel_graph(points, cfg, pool);
+  out.viewpoint = g.viewpoint;
   if (g.size() == 0) return out;
   std::vector<char> removed(g.size(), 0);
   out.structure = remove_structure(g, cfg, removed, pool);

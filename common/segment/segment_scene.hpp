@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "config/stage_configs.hpp"
@@ -16,6 +17,7 @@ struct SceneSegmentation {
   // Per object, indices into the input points, largest object first.
   std::vector<std::vector<std::uint32_t>> objects;
   std::vector<StructurePlane> structure;  // tables, floors, walls removed
+  std::optional<Point> viewpoint;         // the sensor's position, when the layout tells it
 };
 
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,

@@ -37,6 +37,16 @@ TEST(DdsConvert, CloudRoundTripIsExact) {
   EXPECT_EQ(back.outliers_removed, pre.outliers_removed);
 }
 
+TEST(DdsConvert, ViewpointCrossesTheWireOnlyWhenKnown) {
+  msg::CloudData m = to_msg(box().pre, 1);
+  set_viewpoint(m, std::nullopt);
+  EXPECT_FALSE(viewpoint_of(m).has_value());
+  set_viewpoint(m, Point(0.25, -1.5, 3.0));
+  const std::optional<Point> back = viewpoint_of(m);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(*back, Point(0.25, -1.5, 3.0));
+}
+
 TEST(DdsConvert, XyzRejectsAPartialPoint) {
   EXPECT_THROW(from_xyz({1.0, 2.0}), std::invalid_argument);
 }
