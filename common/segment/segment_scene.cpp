@@ -91,8 +91,10 @@ static SceneSegmentation segment_part(const PointList& points, const GridLayout&
   for (const auto& m : members) largest = std::max(largest, m.size());
   const std::vector<char> narrow = narrow_groups(g, label, segments, cfg.fragment_max_width);
   std::vector<std::int32_t> object_of_segment(static_cast<std::size_t>(segments), -1);
-  // Input points per segment, for a segment segmented again at its own resolution.
-  std::vector<std::vector<std::uint32_t>> segment_points(grid.organized() ? 0 : static_cast<std::size_t>(segments));
+  // Input points per segment, for a segment segmented again at its own resolution: in a lidar
+  // frame, where a narrow segment may still hold a small target among ground rings (elsewhere a
+  // narrow strip alone would pass for an object at its own scale).
+  std::vector<std::vector<std::uint32_t>> segment_points(from_inside ? static_cast<std::size_t>(segments) : 0);
   for (std::uint32_t i = 0; i < g.node_of_point.size() && !segment_points.empty(); ++i) {
     const std::uint32_t n = g.node_of_point[i];
     if (n != kNoNode && label[n] >= 0) segment_points[label[n]].push_back(kept.empty() ? i : kept[i]);
