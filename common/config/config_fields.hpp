@@ -40,6 +40,9 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("normal_neighbours", c.normal_neighbours);
   f("line_spread", c.line_spread);
   f("line_max_neighbours", c.line_max_neighbours);
+  f("scan_elevation_bin_degrees", c.scan_elevation_bin_degrees);
+  f("scan_beam_share", c.scan_beam_share);
+  f("scan_beam_bins", c.scan_beam_bins);
   f("smooth_degrees", c.smooth_degrees);
   f("edge_curvature", c.edge_curvature);
   f("convex_tolerance_degrees", c.convex_tolerance_degrees);
@@ -55,7 +58,10 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_margin_cells", c.structure_margin_cells);
   f("structure_contact_min_degrees", c.structure_contact_min_degrees);
   f("structure_min_standing", c.structure_min_standing);
+  f("structure_enclosing", c.structure_enclosing);
+  f("structure_span", c.structure_span);
   f("structure_hypotheses", c.structure_hypotheses);
+  f("remainder_refine", c.remainder_refine);
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_max_share", c.fragment_max_share);
   f("min_object_nodes", c.min_object_nodes);

@@ -2,11 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "geometry/pca.hpp"
 #include "segment/cavity_join.hpp"
 #include "segment/convex_segments.hpp"
 #include "segment/neighbour_graph.hpp"
+#include "segment/own_resolution.hpp"
+#include "segment/remainder_graph.hpp"
+#include "segment/scan_origin.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -32,18 +36,46 @@ bool leftover_of_structure(const NeighbourGraph& g, const std::vector<std::uint3
   return false;
 }
 
+// A lidar frame in its sensor's frame (scan_origin) sees from the origin: normals towards it.
+void orient_to_viewpoint(NeighbourGraph& g, const std::optional<Point>& viewpoint) {
+  g.viewpoint = viewpoint;
+  if (!g.viewpoint) return;
+  for (std::size_t n = 0; n < g.size(); ++n) {
+    if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
+  }
+}
+
 }  // namespace
 
-SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                                parallel::ThreadPool* pool) {
+// `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any.
+static SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan) {
   SceneSegmentation out;
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
                          ? build_organized_graph(points, grid, cfg, pool)
                          : build_voxel_graph(points, cfg, pool);
   out.viewpoint = g.viewpoint;
   if (g.size() == 0) return out;
+  if (!grid.organized()) {
+    if (!scan) scan = scan_origin(points, cfg);
+    orient_to_viewpoint(g, *scan);
+  }
+  const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
-  out.structure = remove_structure(g, cfg, removed, pool);
+  out.structure = remove_structure(g, cfg, removed, pool, from_inside);
+  // What the structure leaves of a wide, sparse scene, at its own (finer) resolution; input
+  // indices through `kept` from then on.
+  std::vector<std::uint32_t> kept;
+  if (!grid.organized()) {
+    if (std::optional<RemainderGraph> finer = finer_remainder_graph(points, g, removed, cfg, pool)) {
+      g = std::move(finer->graph);
+      kept = std::move(finer->points);
+      removed.assign(g.size(), 0);
+      // Structure the coarse graph's connected parts missed (ground rings apart from the rest).
+      const std::vector<StructurePlane> more = remove_structure(g, cfg, removed, pool, from_inside);
+      out.structure.insert(out.structure.end(), more.begin(), more.end());
+    }
+  }
   if (!g.viewpoint) orient_normals_outward(g, removed);
   std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
   join_cavities(g, label, cfg);
@@ -60,9 +92,32 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
   for (const auto& m : members) largest = std::max(largest, m.size());
   const std::vector<char> narrow = narrow_groups(g, label, segments, cfg.fragment_max_width);
   std::vector<std::int32_t> object_of_segment(static_cast<std::size_t>(segments), -1);
+  // Input points per segment, for a segment segmented again at its own resolution: in a lidar
+  // frame, where a narrow segment may still hold a small target among ground rings (elsewhere a
+  // narrow strip alone would pass for an object at its own scale).
+  std::vector<std::vector<std::uint32_t>> segment_points(from_inside ? static_cast<std::size_t>(segments) : 0);
+  for (std::uint32_t i = 0; i < g.node_of_point.size() && !segment_points.empty(); ++i) {
+    const std::uint32_t n = g.node_of_point[i];
+    if (n != kNoNode && label[n] >= 0) segment_points[label[n]].push_back(kept.empty() ? i : kept[i]);
+  }
   std::int32_t objects = 0;
+  std::vector<std::vector<std::uint32_t>> refined;
   for (std::int32_t s = 0; s < segments; ++s) {
     if (static_cast<double>(members[s].size()) < min_nodes) continue;
+    if (!segment_points.empty()) {
+      std::vector<double> spacing;
+      for (std::uint32_t n : members[s]) spacing.push_back(g.spacing[n]);
+      std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
+      if (finer_on_its_own(points, segment_points[s], spacing[spacing.size() / 2], cfg)) {
+        PointList own;
+        for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
+        for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan).objects) {
+          for (std::uint32_t& i : part) i = segment_points[s][i];
+          refined.push_back(std::move(part));
+        }
+        continue;
+      }
+    }
     if (narrow[s] && static_cast<double>(members[s].size()) < cfg.fragment_max_share * static_cast<double>(largest)) {
       continue;
     }
@@ -70,15 +125,21 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
     object_of_segment[s] = objects++;
   }
   out.objects.resize(static_cast<std::size_t>(objects));
-  for (std::uint32_t i = 0; i < points.size(); ++i) {
+  for (std::uint32_t i = 0; i < g.node_of_point.size(); ++i) {
     const std::uint32_t n = g.node_of_point[i];
     if (n == kNoNode || label[n] < 0) continue;
     const std::int32_t o = object_of_segment[label[n]];
-    if (o >= 0) out.objects[o].push_back(i);
+    if (o >= 0) out.objects[o].push_back(kept.empty() ? i : kept[i]);
   }
+  for (auto& part : refined) out.objects.push_back(std::move(part));
   std::stable_sort(out.objects.begin(), out.objects.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
   return out;
+}
+
+SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                                parallel::ThreadPool* pool) {
+  return segment_part(points, grid, cfg, pool, std::nullopt);
 }
 
 }  // namespace cloudshape::segment

@@ -23,8 +23,12 @@ struct SceneSegmentation {
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
 // convex segments; segments under cfg.min_object_nodes nodes or cfg.min_object_share of the
 // nodes are clutter, narrow ones smaller than cfg.fragment_max_share of the largest are slivers,
-// and flat segments lying in a structure plane are leftovers of it. A `pool` builds the graph's
-// normals on its threads: the same segments.
+// and flat segments lying in a structure plane are leftovers of it. An unorganized lidar frame in
+// its sensor's frame (scan_origin) sees from the origin, and its walls and ground seen from inside
+// are structure too; in an unorganized cloud what the structure leaves is gridded anew when that
+// is much finer (finer_remainder_graph), and in a lidar frame a segment whose own points would grid
+// much finer is segmented again alone (finer_on_its_own): each object at its own resolution. A `pool` builds
+// the graph's normals on its threads: the same segments.
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool = nullptr);
 

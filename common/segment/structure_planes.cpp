@@ -240,10 +240,29 @@ double median_spacing(const NeighbourGraph& g, std::vector<std::uint32_t> nodes)
   return s[s.size() / 2];
 }
 
+// A wall or ground seen from inside the scene (a lidar among them): nearly all else lies on the
+// sensor's side of it, and it spans a large share of the scene. A solid's face has its own solid
+// behind it; a table's edge, the floor beyond it.
+bool encloses_viewer(const NeighbourGraph& g, const std::vector<std::uint32_t>& active, const std::vector<char>& inlier,
+                     const PlaneFit& fit, const config::SegmentConfig& cfg) {
+  std::size_t front = 0, others = 0;
+  for (std::uint32_t n : active) {
+    if (inlier[n]) continue;
+    ++others;
+    front += fit.plane.signed_distance(g.nodes[n]) > 0.0 ? 1 : 0;
+  }
+  if (others == 0 || static_cast<double>(front) < cfg.structure_enclosing * static_cast<double>(others)) return false;
+  const geometry::Pca plane = geometry::compute_pca(g.nodes, fit.inliers);
+  const geometry::Pca scene = geometry::compute_pca(g.nodes, active);
+  return std::sqrt(std::max(0.0, plane.eigenvalues(2))) >=
+         cfg.structure_span * std::sqrt(std::max(0.0, scene.eigenvalues(2)));
+}
+
 }  // namespace
 
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const config::SegmentConfig& cfg,
-                                             std::vector<char>& removed, parallel::ThreadPool* pool) {
+                                             std::vector<char>& removed, parallel::ThreadPool* pool,
+                                             bool from_inside) {
   std::vector<StructurePlane> found;
   std::mt19937_64 rng(static_cast<std::uint64_t>(cfg.seed));
   std::vector<char> tried(g.size(), 0);  // inliers of a plane that proved to be no structure
@@ -301,10 +320,20 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
     const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
-    const bool structure = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
-    if (!structure) {
+    const bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
+    const bool encloses = !supports && from_inside && g.viewpoint && encloses_viewer(g, active, inlier, fit, cfg);
+    if (!supports && !encloses) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
       continue;
+    }
+    // Seen from inside, everything in a wall's plane is wall: its parts apart (between windows,
+    // beyond an occluder's shadow) too.
+    if (encloses) {
+      const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
+      fit.inliers.clear();
+      for (std::uint32_t n : active) {
+        if (is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) fit.inliers.push_back(n);
+      }
     }
     for (std::uint32_t n : fit.inliers) removed[n] = 1;
     found.push_back({fit.plane, fit.inliers.size()});

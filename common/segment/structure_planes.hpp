@@ -26,7 +26,12 @@ struct StructurePlane {
 // covers no more than the solid does, and meets the solid's other faces at its own edges (a
 // cone's side leans over its base, but meets it at the base's edge). Deterministic for cfg.seed,
 // whatever `pool` scores the hypotheses.
+// `from_inside`: the graph's viewpoint is a lidar's among its ground and walls; a plane with at
+// least cfg.structure_enclosing of the other nodes on the sensor's side and spanning
+// cfg.structure_span of the scene (standard deviations along the longest axes) is then structure
+// too, and all its nodes in the band go with it (a wall's parts between windows too).
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
-                                             std::vector<char>& removed, parallel::ThreadPool* pool = nullptr);
+                                             std::vector<char>& removed, parallel::ThreadPool* pool = nullptr,
+                                             bool from_inside = false);
 
 }  // namespace cloudshape::segment

@@ -1,0 +1,31 @@
+// Each object at its own resolution: once structure is out of a voxel graph, what is left of a
+// wide, sparse scene (a lidar's objects among its ground and walls) is re-gridded finer.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
+#include "segment/neighbour_graph.hpp"
+
+namespace cloudshape::segment {
+
+struct RemainderGraph {
+  NeighbourGraph graph;               // over `points` alone; node_of_point indexes into them
+  std::vector<std::uint32_t> points;  // the remaining input points, indices into the input
+};
+
+// The points of the nodes not `removed`, as a voxel graph of their own whose voxel is chosen so
+// that they fill about cfg.target_nodes nodes (a surface fills voxels with the inverse square
+// of the edge), never finer than build_voxel_graph's own floor (its sampling). None when that
+// voxel is not at least cfg.remainder_refine times finer than `graph`'s spacing: the graph
+// already holds the remainder at its resolution. Keeps `graph`'s viewpoint (normals towards it).
+std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, const NeighbourGraph& graph,
+                                                    const std::vector<char>& removed,
+                                                    const config::SegmentConfig& cfg,
+                                                    parallel::ThreadPool* pool = nullptr);
+
+}  // namespace cloudshape::segment
