@@ -54,12 +54,12 @@ static SceneSegmentation segment_part(const PointList& points, const GridLayout&
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
                          ? build_organized_graph(points, grid, cfg, pool)
                          : build_voxel_graph(points, cfg, pool);
-  out.viewpoint = g.viewpoint;
   if (g.size() == 0) return out;
   if (!grid.organized()) {
     if (!scan) scan = scan_origin(points, cfg);
     orient_to_viewpoint(g, *scan);
   }
+  out.viewpoint = g.viewpoint;
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
   out.structure = remove_structure(g, cfg, removed, pool, from_inside);
