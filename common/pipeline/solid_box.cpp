@@ -104,6 +104,10 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
     std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi,
                                                           in.cfg.open_end_quantile);
   }
+  // Thinner than twice the verification band, every point lies within the band of both large
+  // faces: the third dimension is not measured, and one face seen is any flat-faced solid's.
+  for (int k = 0; k < 3; ++k)
+    if (hi[k] - lo[k] < 2.0 * in.cfg.inlier_distance * in.resolution) return std::nullopt;
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
 
