@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "geometry/pca.hpp"
+#include "pipeline/face_outline.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -49,6 +50,21 @@ double stray_face_share(const Eigen::Matrix3d& frame, const std::vector<const De
   return all ? static_cast<double>(stray) / static_cast<double>(all) : 0.0;
 }
 
+// A box's faces are rectangles: a face holding a fair share of the face points whose outline
+// fills less of its smallest enclosing rectangle (a triangle fills half) is a prism's cap, a
+// tetrahedron's or a pyramid's face. The outline is the convex hull, so the holes and ragged
+// fill of a real sensor's partial face do not count; only a cut corner does, and mildly.
+bool faces_are_rectangles(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
+  std::size_t all = 0;
+  for (const DetectedPlane* f : faces) all += f->inliers.size();
+  for (const DetectedPlane* f : faces) {
+    if (static_cast<double>(f->inliers.size()) < in.cfg.box_outline_min_share * static_cast<double>(all)) continue;
+    const FaceOutline o = face_outline(in.cloud, *f, 0.0, 0.0, 1.0);
+    if (o.rect_fill > 0.0 && o.rect_fill < in.cfg.box_face_rect_fill) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::optional<FittedSolid> fit_box(const SolveInput& in) {
@@ -83,6 +99,7 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
   frame = refine_frame(frame, faces, cos_parallel);
   if (stray_face_share(frame, faces, std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) > in.cfg.stray_face_share)
     return std::nullopt;
+  if (!faces_are_rectangles(in, faces)) return std::nullopt;
 
   std::array<double, 3> lo{}, hi{};
   for (int k = 0; k < 3; ++k) {
