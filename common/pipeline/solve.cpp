@@ -66,12 +66,13 @@ bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_rati
 }
 
 // Share of the points off the solid's caps (true faces with their normal along its axis; a
-// sphere has none) that lie on true flat faces: a cylinder's or cone's side is curved, so a
-// cloud that is flat faces all round (an octahedron, whose corners ring some axis) is none of
-// them. Zero where the caps hold most of the points.
+// sphere has none) that lie on true flat faces: a cylinder's side is curved, so a cloud that is
+// flat faces all round (an octahedron, whose corners ring some axis) is none. Zero where the
+// caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
+// strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
 double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, std::size_t points,
                        double cos_parallel) {
-  const bool revolution = s.shape == Shape::cylinder || s.shape == Shape::cone || s.shape == Shape::frustum;
+  const bool revolution = s.shape == Shape::cylinder;
   if (!revolution && s.shape != Shape::sphere) return 0.0;
   const Eigen::Vector3d axis = s.axes.row(0).transpose();
   std::size_t flat = 0, caps = 0;
