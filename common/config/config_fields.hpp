@@ -146,6 +146,11 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("frustum_min_taper", c.frustum_min_taper);
   f("frustum_min_top_share", c.frustum_min_top_share);
   f("regular_tolerance", c.regular_tolerance);
+  f("curved_side_flat_share", c.curved_side_flat_share);
+  f("box_face_rect_fill", c.box_face_rect_fill);
+  f("box_outline_min_share", c.box_outline_min_share);
+  f("stray_face_degrees", c.stray_face_degrees);
+  f("stray_face_share", c.stray_face_share);
   f("prism_side_fill", c.prism_side_fill);
   f("prism_run_gap", c.prism_run_gap);
   f("prism_corner_gap", c.prism_corner_gap);

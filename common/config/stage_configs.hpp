@@ -154,6 +154,11 @@ struct SolveConfig {
   double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
   double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
   double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
+  double curved_side_flat_share = 0.6;   // at most this share of a cylinder's or sphere's points off its caps on true flat faces (an octahedron: nearly all)
+  double box_face_rect_fill = 0.6;       // a box's larger faces fill at least this share of their smallest enclosing rectangle (a triangle: half) ...
+  double box_outline_min_share = 0.15;   // ... those holding at least this share of the flat faces' points
+  double stray_face_degrees = 20.0;      // a face farther than this from every face direction of a box or tetrahedron is none of its faces ...
+  double stray_face_share = 0.25;     // at most this share of the faces' points on faces along none of a box's or tetrahedron's face directions (an octahedron's: a quarter or more)
   double prism_side_fill = 0.6;          // the convex hull of a prism side's points covers at least this share of its rectangle (an octahedron's triangles: half)
   double prism_run_gap = 4.0;            // a prism side face's points split where they leave a gap this wide (resolutions): coplanar sides of a non-convex outline
   double prism_corner_gap = 8.0;         // two prism sides meet at a corner when one's points end this near (resolutions) where the next's begin

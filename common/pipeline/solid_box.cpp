@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "geometry/pca.hpp"
+#include "pipeline/face_outline.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -33,6 +34,35 @@ Eigen::Matrix3d refine_frame(const Eigen::Matrix3d& frame,
     r = u * svd.matrixV().transpose();
   }
   return r.allFinite() ? r : frame;
+}
+
+// Every face of a box lies along one of its three axes. Faces that lie along none (an
+// octahedron's fourth direction, a tetrahedron's slants, a triangular prism's second side)
+// say the box is only the points' bounding frame: the share of face points on them.
+double stray_face_share(const Eigen::Matrix3d& frame, const std::vector<const DetectedPlane*>& faces,
+                        double cos_along) {
+  std::size_t all = 0, stray = 0;
+  for (const DetectedPlane* f : faces) {
+    all += f->inliers.size();
+    if ((frame.transpose() * f->plane.normal).cwiseAbs().maxCoeff() < cos_along)
+      stray += f->inliers.size();
+  }
+  return all ? static_cast<double>(stray) / static_cast<double>(all) : 0.0;
+}
+
+// A box's faces are rectangles: a face holding a fair share of the face points whose outline
+// fills less of its smallest enclosing rectangle (a triangle fills half) is a prism's cap, a
+// tetrahedron's or a pyramid's face. The outline is the convex hull, so the holes and ragged
+// fill of a real sensor's partial face do not count; only a cut corner does, and mildly.
+bool faces_are_rectangles(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
+  std::size_t all = 0;
+  for (const DetectedPlane* f : faces) all += f->inliers.size();
+  for (const DetectedPlane* f : faces) {
+    if (static_cast<double>(f->inliers.size()) < in.cfg.box_outline_min_share * static_cast<double>(all)) continue;
+    const FaceOutline o = face_outline(in.cloud, *f, 0.0, 0.0, 1.0);
+    if (o.rect_fill > 0.0 && o.rect_fill < in.cfg.box_face_rect_fill) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -67,6 +97,9 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
   frame.col(1) = a1;
   frame.col(2) = a0.cross(a1);
   frame = refine_frame(frame, faces, cos_parallel);
+  if (stray_face_share(frame, faces, std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) > in.cfg.stray_face_share)
+    return std::nullopt;
+  if (!faces_are_rectangles(in, faces)) return std::nullopt;
 
   std::array<double, 3> lo{}, hi{};
   for (int k = 0; k < 3; ++k) {
@@ -88,6 +121,10 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
     std::tie(lo[k], hi[k]) = detail::slab_median_extent(in.cloud, axis, slab, face_lo, face_hi,
                                                           in.cfg.open_end_quantile);
   }
+  // Thinner than twice the verification band, every point lies within the band of both large
+  // faces: the third dimension is not measured, and one face seen is any flat-faced solid's.
+  for (int k = 0; k < 3; ++k)
+    if (hi[k] - lo[k] < 2.0 * in.cfg.inlier_distance * in.resolution) return std::nullopt;
   std::array<int, 3> order{0, 1, 2};
   std::sort(order.begin(), order.end(), [&](int a, int b) { return hi[a] - lo[a] > hi[b] - lo[b]; });
 

@@ -66,6 +66,27 @@ bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_rati
   return true;
 }
 
+// Share of the points off the solid's caps (true faces with their normal along its axis; a
+// sphere has none) that lie on true flat faces: a cylinder's side is curved, so a cloud that is
+// flat faces all round (an octahedron, whose corners ring some axis) is none. Zero where the
+// caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
+// strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
+double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, std::size_t points,
+                       double cos_parallel) {
+  const bool revolution = s.shape == Shape::cylinder;
+  if (!revolution && s.shape != Shape::sphere) return 0.0;
+  const Eigen::Vector3d axis = s.axes.row(0).transpose();
+  std::size_t flat = 0, caps = 0;
+  for (const DetectedPlane& p : planes.planes) {
+    if (!p.is_face) continue;
+    (revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel ? caps : flat) += p.inliers.size();
+  }
+  // Where the caps hold most of the points (a cone seen from its base) the side is too little
+  // to judge by: the base's rim passes for flat strips.
+  if (2 * (points - std::min(points, caps)) < points) return 0.0;
+  return static_cast<double>(flat) / static_cast<double>(points - caps);
+}
+
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
                  const config::SolveConfig& cfg) {
   const geometry::OrientedBox box = geometry::oriented_bounding_box(
@@ -94,9 +115,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const double diameter = 2.0 * keypoints.reference.radius;
   std::vector<std::pair<FittedSolid, Verification>> fitted;
   double best = 0.0;
+  const double cos_parallel = std::cos(cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
+  const auto admissible = [&](const std::optional<FittedSolid>& solid) {
+    return solid && plausible(*solid, diameter, cfg.max_size_ratio) &&
+           flat_side_share(*solid, planes, cloud.size(), cos_parallel) <= cfg.curved_side_flat_share;
+  };
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
-    if (!solid || !plausible(*solid, diameter, cfg.max_size_ratio)) continue;
+    if (!admissible(solid)) continue;
     const Verification v =
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
     best = std::max(best, v.explained);
@@ -113,7 +139,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // The second chance fits axis, position and radius to the points alone, free of any face or
   // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction).
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
-    if (auto second = fit_cylinder_from_side_normals(input); second && plausible(*second, diameter, cfg.max_size_ratio)) {
+    if (auto second = fit_cylinder_from_side_normals(input); admissible(second)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
       if (v.explained >= std::max(cfg.min_inlier_fraction, cfg.side_fit_min_inlier_fraction) &&

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <vector>
 
 #include "new_shapes_support.hpp"
 #include "synth/negative_solid.hpp"
@@ -9,8 +10,8 @@
 namespace cloudshape::newshapes {
 namespace {
 
-void expect_unknown(synth::NegativeKind kind) {
-  for (std::uint64_t seed : {21, 22, 23}) {
+void expect_unknown(synth::NegativeKind kind, std::vector<std::uint64_t> seeds = {21, 22, 23}) {
+  for (std::uint64_t seed : seeds) {
     std::mt19937_64 rng(seed);
     const synth::SolidMesh mesh = synth::random_negative_solid(kind, rng, 100.0);
     const pipeline::ObjectResult o = recognise_one(sample(mesh, 15000, 0.005, seed));
@@ -24,10 +25,12 @@ TEST(Negatives, EllipsoidIsUnknown) { expect_unknown(synth::NegativeKind::ellips
 TEST(Negatives, TorusIsUnknown) { expect_unknown(synth::NegativeKind::torus); }
 TEST(Negatives, SquarePyramidIsUnknown) { expect_unknown(synth::NegativeKind::square_pyramid); }
 
-// DISABLED (issue 11, left): an octahedron's faces lie pairwise in a box's planes and the box
-// explains 53-60% of its points, above solve.min_inlier_fraction (0.5); a box face-fill check
-// fixed it on synthetic clouds but turned the real Kinect boxes (milk.pcd, mOSD) unknown.
-TEST(Negatives, DISABLED_OctahedronIsUnknown) { expect_unknown(synth::NegativeKind::octahedron); }
+// Its faces lie pairwise in parallel planes, and some pairs nearly at right angles: a box
+// explains more than half of its points, but its fourth face direction lies along no box axis
+// (solve.stray_face_share); its corners ring an axis, but its side is flat faces, no cylinder's.
+TEST(Negatives, OctahedronIsUnknown) {
+  expect_unknown(synth::NegativeKind::octahedron, {21, 22, 23, 24, 25, 26, 27, 28});
+}
 
 }  // namespace
 }  // namespace cloudshape::newshapes

@@ -70,17 +70,18 @@ const std::vector<Gate>& gates() {
       // 1.09%; 0, 0
       {"real", 15, 97.0, 0.0045, 0.0220, -1.0, -1.0, 1, 1},
       // negatives (ellipsoid, torus, square pyramid, octahedron; 30 each): right = unknown.
-      // 77.5 (fast form, prism-2): box 20 (octahedra), tetrahedron 4, cylinder 3.
-      // Issue 11 asks 95 and none named: not met yet, this floor only guards what is reached.
-      {"negatives", 120, 74.5, -1.0, -1.0, -1.0, -1.0, 1, 1},
+      // 100 (fast form, shapes-3; prism-2: 77.5, box 20 octahedra, tetrahedron 4, cylinder 3).
+      // Issue 11 asks 95 and none named as one of the six (checked below).
+      {"negatives", 120, 97.0, -1.0, -1.0, -1.0, -1.0, 1, 1},
       // new_shapes (30 frusta, 30 prisms of nine cross-section kinds, 30 irregular tetrahedra,
       // noise 0.5%): 96.7 (frustum 30, tetrahedron 30, prism 27: box 1, a prism of 5 sides 1,
       // unknown 1); 0.16%, 1.29%; 0.07%; 0.06; 0, 0 (fast form, prism-2)
       {"new_shapes", 90, 93.5, 0.0030, 0.0350, 0.0015, 0.25, 1, 1},
-      // new_shapes_view (the same kinds, one camera in any direction): 27.8 (tetrahedron 6,
-      // frustum 15, prism 4; box 24, unknown 19); 0.74%, 8.04%; 0.79%; 0.16; 1, 0. Issue 11
-      // asks 90: far from met, this floor only guards what is reached.
-      {"new_shapes_view", 90, 24.5, 0.0150, 0.1700, 0.0160, 0.35, 2, 1},
+      // new_shapes_view (the same kinds, one camera in any direction): 25.6 (tetrahedron 4,
+      // frustum 15, prism 4; box 10, unknown 33); 0.69%, 3.84%; 0.76%; 0.16; 1, 0 (shapes-3;
+      // prism-2: 27.8 with box 24, two of its tetrahedra 32-36% off in edge). Issue 11 asks
+      // 90: far from met, this floor only guards what is reached.
+      {"new_shapes_view", 90, 21.5, 0.0150, 0.1000, 0.0160, 0.35, 2, 1},
   };
   return all;
 }
@@ -129,6 +130,12 @@ TEST_P(AccuracyGate, ConditionMeetsItsFloor) {
   }
   EXPECT_LE(all.at("false_objects").get<int>(), g.max_false_objects) << figures;
   EXPECT_LE(all.at("missed_objects").get<int>(), g.max_missed_objects) << figures;
+  // An honest unknown, never one of the six, for a solid that is none of them.
+  if (g.condition == "negatives") {
+    for (const auto& [shape, count] : all.at("wrong_as").items())
+      for (const char* six : {"box", "tetrahedron", "pentagonal_prism", "cone", "cylinder", "sphere"})
+        EXPECT_NE(shape, six) << count << " negatives reported as " << shape;
+  }
   // Every single-object synthetic cloud holds one solid.
   if (g.condition != "multi" && g.condition != "real") {
     EXPECT_EQ(all.at("objects").get<std::size_t>(), g.clouds);
