@@ -38,7 +38,7 @@ ObjectResult recognise(const PointList& raw, const std::optional<Point>& viewpoi
   const auto planes = segment_planes(pre.points, pre.resolution, cfg.planes);
   const auto kp = find_keypoints(pre.points, planes, pre.resolution, cfg.keypoints);
   const auto cls = classify_cloud(pre.points, planes, kp, pre.resolution, cfg.classify);
-  return solve_object(pre.points, planes, kp, cls, pre.resolution, cfg.solve, viewpoint);
+  return solve_object(pre.points, planes, kp, cls, pre.resolution, cfg.solve, nullptr, viewpoint);
 }
 
 double dimension(const ObjectResult& r, const std::string& name) {

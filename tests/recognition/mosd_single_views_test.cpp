@@ -49,7 +49,7 @@ pipeline::ObjectResult recognize_object(const PointList& raw, const config::Pipe
   const auto planes = pipeline::segment_planes(pre.points, pre.resolution, cfg.planes);
   const auto kp = pipeline::find_keypoints(pre.points, planes, pre.resolution, cfg.keypoints);
   const auto cls = pipeline::classify_cloud(pre.points, planes, kp, pre.resolution, cfg.classify);
-  return pipeline::solve_object(pre.points, planes, kp, cls, pre.resolution, cfg.solve, Point::Zero());
+  return pipeline::solve_object(pre.points, planes, kp, cls, pre.resolution, cfg.solve, nullptr, Point::Zero());
 }
 
 std::string category(int frame) {
