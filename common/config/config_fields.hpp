@@ -147,6 +147,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("frustum_min_top_share", c.frustum_min_top_share);
   f("regular_tolerance", c.regular_tolerance);
   f("curved_side_flat_share", c.curved_side_flat_share);
+  f("flat_face_fill_cells", c.flat_face_fill_cells);
+  f("flat_face_min_fill", c.flat_face_min_fill);
   f("box_face_rect_fill", c.box_face_rect_fill);
   f("box_outline_min_share", c.box_outline_min_share);
   f("stray_face_degrees", c.stray_face_degrees);

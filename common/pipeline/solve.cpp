@@ -3,8 +3,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
+#include <unordered_set>
 
+#include "geometry/convex_hull.hpp"
 #include "geometry/oriented_box.hpp"
+#include "geometry/polygon.hpp"
 #include "pipeline/container.hpp"
 #include "pipeline/solids.hpp"
 
@@ -71,14 +75,39 @@ bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_rati
 // flat faces all round (an octahedron, whose corners ring some axis) is none. Zero where the
 // caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
 // strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
-double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, std::size_t points,
-                       double cos_parallel) {
+// Share of the face's convex hull its points cover, in cells of `cell`: a face is filled, while a
+// single scan line is flat too (every lidar ring on a sphere lies in a plane) but covers a curve.
+double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell) {
+  if (face.inliers.size() < 3 || !(cell > 0.0)) return 1.0;
+  const Eigen::Vector3d n = face.plane.normal.normalized();
+  const Eigen::Vector3d u = n.unitOrthogonal();
+  const Eigen::Vector3d v = n.cross(u);
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(face.inliers.size());
+  std::unordered_set<std::uint64_t> cells;
+  for (std::uint32_t i : face.inliers) {
+    const Eigen::Vector2d q(cloud[i].dot(u), cloud[i].dot(v));
+    flat.push_back(q);
+    const auto cx = static_cast<std::int64_t>(std::floor(q.x() / cell));
+    const auto cy = static_cast<std::int64_t>(std::floor(q.y() / cell));
+    cells.insert((static_cast<std::uint64_t>(cx) << 32) ^ static_cast<std::uint64_t>(cy & 0xFFFFFFFF));
+  }
+  const double area = std::abs(geometry::signed_area(geometry::convex_hull_2d(std::move(flat))));
+  if (!(area > 0.0)) return 0.0;
+  return std::min(1.0, static_cast<double>(cells.size()) * cell * cell / area);
+}
+
+double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, const PointList& cloud,
+                       double cos_parallel, double cell, double min_fill) {
+  const std::size_t points = cloud.size();
   const bool revolution = s.shape == Shape::cylinder;
   if (!revolution && s.shape != Shape::sphere) return 0.0;
   const Eigen::Vector3d axis = s.axes.row(0).transpose();
   std::size_t flat = 0, caps = 0;
   for (const DetectedPlane& p : planes.planes) {
     if (!p.is_face) continue;
+    const bool cap = revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel;
+    if (!cap && hull_fill(cloud, p, cell) < min_fill) continue;
     (revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel ? caps : flat) += p.inliers.size();
   }
   // Where the caps hold most of the points (a cone seen from its base) the side is too little
@@ -118,7 +147,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const double cos_parallel = std::cos(cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
   const auto admissible = [&](const std::optional<FittedSolid>& solid) {
     return solid && plausible(*solid, diameter, cfg.max_size_ratio) &&
-           flat_side_share(*solid, planes, cloud.size(), cos_parallel) <= cfg.curved_side_flat_share;
+           flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
+                           cfg.flat_face_min_fill) <= cfg.curved_side_flat_share;
   };
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);
