@@ -70,11 +70,6 @@ bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_rati
   return true;
 }
 
-// Share of the points off the solid's caps (true faces with their normal along its axis; a
-// sphere has none) that lie on true flat faces: a cylinder's side is curved, so a cloud that is
-// flat faces all round (an octahedron, whose corners ring some axis) is none. Zero where the
-// caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
-// strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
 // Share of the face's convex hull its points cover, in cells of `cell`: a face is filled, while a
 // single scan line is flat too (every lidar ring on a sphere lies in a plane) but covers a curve.
 double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell) {
@@ -97,6 +92,12 @@ double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell)
   return std::min(1.0, static_cast<double>(cells.size()) * cell * cell / area);
 }
 
+// Share of the points off the solid's caps (true faces with their normal along its axis; a
+// sphere has none) that lie on true flat faces their points fill (hull_fill of at least
+// `min_fill`): a cylinder's side is curved, so a cloud that is flat faces all round (an
+// octahedron, whose corners ring some axis) is none. Zero where the
+// caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
+// strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
 double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, const PointList& cloud,
                        double cos_parallel, double cell, double min_fill) {
   const std::size_t points = cloud.size();
@@ -108,7 +109,7 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
     if (!p.is_face) continue;
     const bool cap = revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel;
     if (!cap && hull_fill(cloud, p, cell) < min_fill) continue;
-    (revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel ? caps : flat) += p.inliers.size();
+    (cap ? caps : flat) += p.inliers.size();
   }
   // Where the caps hold most of the points (a cone seen from its base) the side is too little
   // to judge by: the base's rim passes for flat strips.

@@ -229,6 +229,14 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   return g;
 }
 
+void orient_to_viewpoint(NeighbourGraph& g, const std::optional<Point>& viewpoint) {
+  g.viewpoint = viewpoint;
+  if (!g.viewpoint) return;
+  for (std::size_t n = 0; n < g.size(); ++n) {
+    if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
+  }
+}
+
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
   NeighbourGraph g;

@@ -47,4 +47,8 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool = nullptr);
 
+// Sets the graph's viewpoint and, when there is one, turns every normal towards it (a lidar
+// frame seen from its sensor).
+void orient_to_viewpoint(NeighbourGraph& graph, const std::optional<Point>& viewpoint);
+
 }  // namespace cloudshape::segment

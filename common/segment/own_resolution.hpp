@@ -10,10 +10,9 @@
 
 namespace cloudshape::segment {
 
-// Whether `part` (indices into `points`), gridded alone for cfg.target_nodes voxels (never finer
+// Whether the segment's points `own`, gridded alone for cfg.target_nodes voxels (never finer
 // than three mean neighbour distances, build_voxel_graph's floor), gets a voxel at least
 // cfg.remainder_refine times finer than `spacing`, the node spacing it has in the scene's graph.
-bool finer_on_its_own(const PointList& points, const std::vector<std::uint32_t>& part, double spacing,
-                      const config::SegmentConfig& cfg);
+bool finer_on_its_own(const PointList& own, double spacing, const config::SegmentConfig& cfg);
 
 }  // namespace cloudshape::segment

@@ -43,14 +43,7 @@ std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, con
   if (!(budget < 1e15)) return std::nullopt;
   fine.target_nodes = static_cast<std::int64_t>(budget) + 1;
   out.graph = build_voxel_graph(rest, fine, pool);
-  out.graph.viewpoint = graph.viewpoint;
-  if (out.graph.viewpoint) {
-    for (std::size_t n = 0; n < out.graph.size(); ++n) {
-      if (out.graph.normals[n].dot(*out.graph.viewpoint - out.graph.nodes[n]) < 0.0) {
-        out.graph.normals[n] = -out.graph.normals[n];
-      }
-    }
-  }
+  orient_to_viewpoint(out.graph, graph.viewpoint);
   return out;
 }
 

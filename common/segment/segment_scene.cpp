@@ -36,19 +36,9 @@ bool leftover_of_structure(const NeighbourGraph& g, const std::vector<std::uint3
   return false;
 }
 
-// A lidar frame in its sensor's frame (scan_origin) sees from the origin: normals towards it.
-void orient_to_viewpoint(NeighbourGraph& g, const std::optional<Point>& viewpoint) {
-  g.viewpoint = viewpoint;
-  if (!g.viewpoint) return;
-  for (std::size_t n = 0; n < g.size(); ++n) {
-    if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
-  }
-}
-
-}  // namespace
-
-// `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any.
-static SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+// `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
+// (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
+SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan) {
   SceneSegmentation out;
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
@@ -108,9 +98,10 @@ static SceneSegmentation segment_part(const PointList& points, const GridLayout&
       std::vector<double> spacing;
       for (std::uint32_t n : members[s]) spacing.push_back(g.spacing[n]);
       std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-      if (finer_on_its_own(points, segment_points[s], spacing[spacing.size() / 2], cfg)) {
-        PointList own;
-        for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
+      PointList own;
+      own.reserve(segment_points[s].size());
+      for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
+      if (finer_on_its_own(own, spacing[spacing.size() / 2], cfg)) {
         for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan).objects) {
           for (std::uint32_t& i : part) i = segment_points[s][i];
           refined.push_back(std::move(part));
@@ -136,6 +127,8 @@ static SceneSegmentation segment_part(const PointList& points, const GridLayout&
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
   return out;
 }
+
+}  // namespace
 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
