@@ -18,6 +18,25 @@ struct PointListAdaptor {
 using Tree = nanoflann::KDTreeSingleIndexAdaptor<
     nanoflann::L2_Simple_Adaptor<double, PointListAdaptor>, PointListAdaptor, 3, std::uint32_t>;
 
+// nanoflann's RadiusResultSet without the distances: the indices go straight into the caller's
+// vector, in the same traversal order, with no pair vector to allocate and copy per query.
+class IndexRadiusSet {
+ public:
+  IndexRadiusSet(double radius, std::vector<std::uint32_t>& out) : radius_(radius), out_(out) { out_.clear(); }
+  void init() { out_.clear(); }
+  std::size_t size() const { return out_.size(); }
+  bool full() const { return true; }
+  bool addPoint(double dist, std::uint32_t index) {
+    if (dist < radius_) out_.push_back(index);
+    return true;
+  }
+  double worstDist() const { return radius_; }
+
+ private:
+  const double radius_;
+  std::vector<std::uint32_t>& out_;
+};
+
 }  // namespace
 
 struct KdTree::Index {
@@ -35,8 +54,10 @@ void KdTree::knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& 
                  std::vector<double>* sq_dists) const {
   k = std::min(k, points_.size());
   indices.resize(k);
-  std::vector<double> local;
-  std::vector<double>& d = sq_dists ? *sq_dists : local;
+  // Callers that want no distances still need room for them: one buffer per thread, not one
+  // allocation per query.
+  thread_local std::vector<double> scratch;
+  std::vector<double>& d = sq_dists ? *sq_dists : scratch;
   d.resize(k);
   if (k == 0) return;
   const std::size_t found = index_->tree.knnSearch(query.data(), k, indices.data(), d.data());
@@ -45,13 +66,10 @@ void KdTree::knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& 
 }
 
 void KdTree::radius(const Point& query, double radius, std::vector<std::uint32_t>& indices) const {
-  std::vector<std::pair<std::uint32_t, double>> matches;
   nanoflann::SearchParams params;
   params.sorted = false;
-  index_->tree.radiusSearch(query.data(), radius * radius, matches, params);
-  indices.clear();
-  indices.reserve(matches.size());
-  for (const auto& m : matches) indices.push_back(m.first);
+  IndexRadiusSet found(radius * radius, indices);
+  index_->tree.radiusSearchCustomCallback(query.data(), found, params);
 }
 
 }  // namespace cloudshape::geometry

@@ -26,10 +26,10 @@ Bounds bounding_box(const PointList& points) {
 }
 
 PointList voxel_grid_downsample(const PointList& points, double voxel_size,
-                                int min_occupied_neighbours, std::size_t* isolated) {
+                                int min_occupied_neighbours, std::size_t* isolated, const Bounds* bounds) {
   if (isolated) *isolated = 0;
   if (!(voxel_size > 0.0) || points.empty()) return points;
-  const Bounds b = bounding_box(points);
+  const Bounds b = bounds ? *bounds : bounding_box(points);
   const double inv = 1.0 / voxel_size;
   // 21 bits per axis (one voxel of margin each side for the neighbour test). A denormal voxel
   // (inv = inf) or coordinates whose differences overflow give no grid (found by fuzz_ingest:
@@ -69,10 +69,11 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
     for (std::size_t v = 0; v < acc.size(); ++v) {
       const std::uint64_t key = acc[v].key;
       const std::uint64_t ix = key >> 42, iy = (key >> 21) & kMask, iz = key & kMask;
+      // Only whether `min_occupied_neighbours` are reached matters: the search stops there.
       int occupied = 0;
       for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
+          for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
             if ((dx || dy || dz) &&
                 slot.find(key_of(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
               ++occupied;
@@ -91,14 +92,16 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   return out;
 }
 
-std::size_t count_occupied_voxels(const PointList& points, double voxel_size) {
+std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds) {
   if (!(voxel_size > 0.0) || points.empty()) return points.size();
-  const Bounds b = bounding_box(points);
+  const Bounds b = bounds ? *bounds : bounding_box(points);
   const double inv = 1.0 / voxel_size;
   // The same keys and the same validity as voxel_grid_downsample's.
   const Eigen::Vector3d extent = (b.max - b.min) * inv;
   if (!std::isfinite(inv) || !extent.allFinite() || !(extent.maxCoeff() < double((1 << 21) - 3))) return points.size();
-  detail::CellMap slot(points.size() / 4 + 16);
+  // Room for a voxel per point: the finest voxel of a search often holds one or two points, and
+  // a map that grows rehashes every key it has.
+  detail::CellMap slot(points.size() + 16);
   std::uint32_t occupied = 0;
   for (const Point& p : points) {
     const Eigen::Vector3d q = (p - b.min) * inv;

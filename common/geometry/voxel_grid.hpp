@@ -7,29 +7,31 @@
 
 namespace cloudshape::geometry {
 
-// Replaces the points of each cubic voxel of edge `voxel_size` by their centroid.
-// voxel_size <= 0 returns the input unchanged. With min_occupied_neighbours > 0, voxels
-// with fewer occupied voxels among their 26 neighbours are dropped as isolated (a radius
-// outlier filter at the voxel's scale) and counted in *isolated; unless more than a quarter
-// of the voxels are isolated, which means the grid is finer than the cloud's sampling.
-PointList voxel_grid_downsample(const PointList& points, double voxel_size,
-                                int min_occupied_neighbours = 0, std::size_t* isolated = nullptr);
-
-// voxel_grid_downsample(points, voxel_size).size() without building the points: for searches
-// of the voxel size that only count.
-std::size_t count_occupied_voxels(const PointList& points, double voxel_size);
-
-// Mean distance from a point to its nearest other point, estimated on at most
-// `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
-// A `pool` shares the grid's pass over the points out (large clouds): the same value.
-double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
-                                       parallel::ThreadPool* pool = nullptr);
-
 struct Bounds {
   Point min = Point::Zero();
   Point max = Point::Zero();
   double diagonal() const { return (max - min).norm(); }
 };
 Bounds bounding_box(const PointList& points);
+
+// Replaces the points of each cubic voxel of edge `voxel_size` by their centroid.
+// voxel_size <= 0 returns the input unchanged. With min_occupied_neighbours > 0, voxels
+// with fewer occupied voxels among their 26 neighbours are dropped as isolated (a radius
+// outlier filter at the voxel's scale) and counted in *isolated; unless more than a quarter
+// of the voxels are isolated, which means the grid is finer than the cloud's sampling.
+// `bounds`, if given, must be bounding_box(points) (a caller that has it saves the pass).
+PointList voxel_grid_downsample(const PointList& points, double voxel_size,
+                                int min_occupied_neighbours = 0, std::size_t* isolated = nullptr,
+                                const Bounds* bounds = nullptr);
+
+// voxel_grid_downsample(points, voxel_size).size() without building the points: for searches
+// of the voxel size that only count (`bounds` as above).
+std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds = nullptr);
+
+// Mean distance from a point to its nearest other point, estimated on at most
+// `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
+// A `pool` shares the grid's pass over the points out (large clouds): the same value.
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
+                                       parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::geometry

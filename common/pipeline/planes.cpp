@@ -7,6 +7,10 @@
 
 #include "pipeline/plane_patch.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace cloudshape::pipeline {
 namespace {
 
@@ -21,6 +25,51 @@ std::vector<std::uint32_t> points_near(const PointList& cloud,
   return out;
 }
 
+// The points that score the hypotheses, one array per coordinate, so that the count below runs
+// over contiguous values.
+struct ScoringPoints {
+  std::vector<double> x, y, z;
+  void add(const Point& p) { x.push_back(p.x()), y.push_back(p.y()), z.push_back(p.z()); }
+  std::size_t size() const { return x.size(); }
+};
+
+// Points in [begin, end) within `threshold` of the plane, with Plane::signed_distance's
+// arithmetic in its order ((nx x + ny y) + nz z) + d: two points at a time where SSE2 is (every
+// x86-64), the same IEEE operations per lane, so the same counts.
+std::size_t count_near(const ScoringPoints& pts, std::size_t begin, std::size_t end, const geometry::Plane& plane,
+                       double threshold) {
+  const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.offset;
+  std::size_t count = 0;
+  std::size_t i = begin;
+#if defined(__SSE2__)
+  const __m128d vx = _mm_set1_pd(nx), vy = _mm_set1_pd(ny), vz = _mm_set1_pd(nz), vd = _mm_set1_pd(d);
+  const __m128d limit = _mm_set1_pd(threshold);
+  const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+  for (; i + 2 <= end; i += 2) {
+    __m128d v = _mm_add_pd(_mm_mul_pd(vx, _mm_loadu_pd(&pts.x[i])), _mm_mul_pd(vy, _mm_loadu_pd(&pts.y[i])));
+    v = _mm_add_pd(_mm_add_pd(v, _mm_mul_pd(vz, _mm_loadu_pd(&pts.z[i]))), vd);
+    const int inside = _mm_movemask_pd(_mm_cmplt_pd(_mm_and_pd(v, magnitude), limit));
+    count += static_cast<std::size_t>((inside & 1) + (inside >> 1));
+  }
+#endif
+  for (; i < end; ++i) count += std::abs(nx * pts.x[i] + ny * pts.y[i] + nz * pts.z[i] + d) < threshold ? 1 : 0;
+  return count;
+}
+
+// Points within `threshold` of the plane; counting stops, with a count of at most `to_beat`,
+// once the points left could no longer lift it above `to_beat` (only a higher score replaces
+// the best hypothesis, so the choice is the one full counts make).
+std::size_t subset_score(const ScoringPoints& pts, const geometry::Plane& plane, double threshold,
+                         std::size_t to_beat) {
+  constexpr std::size_t kBlock = 256;
+  std::size_t score = 0;
+  for (std::size_t begin = 0; begin < pts.size(); begin += kBlock) {
+    if (score + (pts.size() - begin) <= to_beat) break;
+    score += count_near(pts, begin, std::min(pts.size(), begin + kBlock), plane, threshold);
+  }
+  return score;
+}
+
 // Best plane hypothesis by RANSAC: triples drawn from one local neighbourhood (a triple
 // spread over the cloud rarely lies on one face), scored on a fixed random subset.
 std::optional<geometry::Plane> best_hypothesis(const PointList& cloud,
@@ -30,13 +79,12 @@ std::optional<geometry::Plane> best_hypothesis(const PointList& cloud,
                                                double resolution, const config::PlanesConfig& cfg,
                                                std::mt19937_64& rng) {
   std::uniform_int_distribution<std::size_t> pick(0, remaining.size() - 1);
-  std::vector<std::uint32_t> subset;
+  ScoringPoints subset;
   const auto samples = static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.score_samples));
   if (remaining.size() <= samples) {
-    subset = remaining;
+    for (std::uint32_t i : remaining) subset.add(cloud[i]);
   } else {
-    subset.reserve(samples);
-    for (std::size_t i = 0; i < samples; ++i) subset.push_back(remaining[pick(rng)]);
+    for (std::size_t i = 0; i < samples; ++i) subset.add(cloud[remaining[pick(rng)]]);
   }
   // Scored at the fine threshold: a tangent strip of a curved surface is as wide as the
   // threshold allows (width ~ sqrt(threshold)), a true face is not, so the fine score ranks
@@ -57,10 +105,7 @@ std::optional<geometry::Plane> best_hypothesis(const PointList& cloud,
     if (b == a || c == a || c == b || labels[b] >= 0 || labels[c] >= 0) continue;
     const auto plane = geometry::plane_through(cloud[a], cloud[b], cloud[c]);
     if (!plane) continue;
-    std::size_t score = 0;
-    for (std::uint32_t i : subset)
-      if (std::abs(plane->signed_distance(cloud[i])) < threshold) ++score;
-    if (score > best_score) {
+    if (const std::size_t score = subset_score(subset, *plane, threshold, best_score); score > best_score) {
       best_score = score;
       best = plane;
     }

@@ -54,7 +54,8 @@ PointList smooth_flat_regions(const PointList& points, std::size_t k, double max
 PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg) {
   PreprocessedCloud out;
   if (raw.empty()) return out;
-  const double diagonal = geometry::bounding_box(raw).diagonal();
+  const geometry::Bounds bounds = geometry::bounding_box(raw);
+  const double diagonal = bounds.diagonal();
   double voxel = cfg.voxel_divisions > 0.0 ? diagonal / cfg.voxel_divisions : 0.0;
   const int min_neighbours = static_cast<int>(cfg.isolated_voxel_neighbours);
   const auto budget = static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.max_points));
@@ -65,21 +66,23 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   if (cfg.max_points > 0 && raw.size() > budget) {
     PointList sparse;
     const std::size_t stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
+    sparse.reserve((raw.size() + stride - 1) / stride);
     for (std::size_t i = 0; i < raw.size(); i += stride) sparse.push_back(raw[i]);
+    const geometry::Bounds sparse_bounds = geometry::bounding_box(sparse);
     for (int attempt = 0; attempt < 4; ++attempt) {
-      const std::size_t n = geometry::count_occupied_voxels(sparse, voxel);
+      const std::size_t n = geometry::count_occupied_voxels(sparse, voxel, &sparse_bounds);
       if (n <= budget) break;
       voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
               std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;
     }
   }
   std::size_t isolated = 0;
-  PointList pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated);
+  PointList pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
   for (int attempt = 0; attempt < 3 && cfg.max_points > 0 && pts.size() > budget + budget / 5;
        ++attempt) {
     voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
             std::sqrt(static_cast<double>(pts.size()) / static_cast<double>(budget)) * 1.02;
-    pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated);
+    pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
   }
   out.voxel_size = voxel;
   out.outliers_removed = isolated;
