@@ -158,7 +158,12 @@ private:
     summary_.library = std::string(c.string("library"));
   }
 
+  // The data section's CRC is taken record by record as the walk passes them, so that an
+  // uncompressed chunk's records, which their own CRC covers too, are read for it only once.
+  // After a seek that skipped chunks it is not checked, and not taken.
   std::size_t read_data_section(std::size_t pos) {
+    const bool hashing = summary_.chunks_skipped == 0;
+    if (hashing) data_crc_.update(bytes_.substr(0, pos));
     for (;;) {
       if (pos == bytes_.size()) {
         throw ReadError(name_, detail::at_byte(pos),
@@ -168,15 +173,17 @@ private:
       switch (r.opcode) {
         case m::kDataEnd: {
           // Chunks skipped unread: the bytes the CRC covers were not all read, and are not now.
-          if (summary_.chunks_skipped > 0) return r.end();
-          data_crc_.update(bytes_.substr(0, r.offset));
+          if (!hashing) return r.end();
           check_data_end(r);
           return r.end();
         }
         case m::kFooter: return pos;  // a writer that skipped DataEnd: accepted, nothing to check
         case m::kHeader: throw ReadError(name_, where(r), "a second Header record");
-        case m::kChunk: read_chunk(r); break;
-        default: read_plain_record(r, kNoChunk); break;
+        case m::kChunk: read_chunk(r, hashing); break;
+        default:
+          read_plain_record(r, kNoChunk);
+          if (hashing) data_crc_.update(bytes_.substr(r.offset, r.end() - r.offset));
+          break;
       }
       pos = r.end();
     }
@@ -295,7 +302,8 @@ private:
     }
   }
 
-  void read_chunk(const Record& r) {
+  // `hashing`: the chunk's bytes go into the data section's CRC too.
+  void read_chunk(const Record& r, bool hashing) {
     m::RecordCursor c(r.content, name_, where(r));
     c.u64("message_start_time");
     c.u64("message_end_time");
@@ -318,6 +326,7 @@ private:
                       "uncompressed chunk holds " + std::to_string(data.size()) + " bytes, it declares " +
                           std::to_string(size));
     }
+    const std::string_view whole = bytes_.substr(r.offset, r.end() - r.offset);
     if (stored_crc != 0) {
       const std::uint32_t crc = detail::crc32_of(records);
       if (crc != stored_crc) {
@@ -325,7 +334,16 @@ private:
                         "chunk CRC mismatch: the file says " + hex(stored_crc) + ", the uncompressed records give " +
                             hex(crc));
       }
+      if (hashing && compression.empty()) {
+        // The records are the chunk's own bytes here: their CRC joins the data section's.
+        const auto before = static_cast<std::size_t>(data.data() - whole.data());
+        data_crc_.update(whole.substr(0, before));
+        data_crc_.append(crc, data.size());
+        data_crc_.update(whole.substr(before + data.size()));
+        hashing = false;
+      }
     }
+    if (hashing) data_crc_.update(whole);
     ++summary_.chunks;
     for (std::size_t pos = 0; pos < records.size();) {
       const Record inner = next_record(pos, "chunk", records, r.offset);

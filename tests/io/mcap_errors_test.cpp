@@ -159,6 +159,28 @@ TEST(IoMcapErrors, BadDataSectionCrc) {
                     "data section CRC mismatch");
 }
 
+// The data section's CRC is taken record by record, an uncompressed chunk's records through the
+// CRC they already have: a byte of the chunk outside its records (message_start_time) or, with no
+// chunk CRC to catch it first, inside them still fails it, for every compression.
+TEST(IoMcapErrors, DataSectionCrcCoversEveryByteOfTheChunks) {
+  for (const McapCompression c : {McapCompression::none, McapCompression::lz4, McapCompression::zstd}) {
+    std::string bytes = recording(c);
+    const auto records = top_records(bytes);
+    const auto chunk = first_of(records, m::kChunk);
+    const auto data_end = first_of(records, m::kDataEnd);
+    std::string header_changed = bytes;
+    header_changed[chunk.content()] ^= 0x01;
+    expect_read_error([&] { read(header_changed); }, "mem.mcap", at(m::kDataEnd, data_end.offset),
+                      "data section CRC mismatch");
+    if (c != McapCompression::none) continue;
+    std::string records_changed = bytes;
+    poke<std::uint32_t>(records_changed, chunk.content() + 24, 0);  // no chunk CRC
+    records_changed[chunk.offset + chunk.length] ^= 0x01;           // inside a message payload
+    expect_read_error([&] { read(records_changed); }, "mem.mcap", at(m::kDataEnd, data_end.offset),
+                      "data section CRC mismatch");
+  }
+}
+
 TEST(IoMcapErrors, BadSummaryCrc) {
   std::string bytes = recording();
   const auto records = top_records(bytes);

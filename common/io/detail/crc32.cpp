@@ -18,4 +18,10 @@ void Crc32::update(std::string_view bytes) {
   }
 }
 
+void Crc32::append(std::uint32_t crc_of_bytes, std::uint64_t length) {
+  // zlib's z_off_t is 64 bits wide where a buffer can be this large.
+  static_assert(sizeof(z_off_t) >= sizeof(std::size_t), "crc32_combine's length must hold a buffer's size");
+  value_ = static_cast<std::uint32_t>(::crc32_combine(value_, crc_of_bytes, static_cast<z_off_t>(length)));
+}
+
 }  // namespace cloudshape::io::detail

@@ -10,6 +10,8 @@ namespace cloudshape::io::detail {
 class Crc32 {
 public:
   void update(std::string_view bytes);
+  // As update() over `length` bytes whose own CRC is `crc_of_bytes`, without reading them again.
+  void append(std::uint32_t crc_of_bytes, std::uint64_t length);
   std::uint32_t value() const { return value_; }
 
 private:
