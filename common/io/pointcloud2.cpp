@@ -138,6 +138,30 @@ double load_coordinate(const std::uint8_t* point, const Coordinate& c, bool swap
   return c.f64 ? load<double>(p, swap) : static_cast<double>(load<float>(p, swap));
 }
 
+// The points of every row and column, `load` reading one (a Point), the non-finite ones dropped.
+template <class Load>
+void decode_points(const PointCloud2& cloud, bool organized, const Load& load, CloudFile& out) {
+  for (std::size_t row = 0; row < cloud.height; ++row) {
+    const std::uint8_t* row_start = cloud.data.data() + row * cloud.row_step;
+    for (std::size_t column = 0; column < cloud.width; ++column) {
+      const Point p = load(row_start + column * cloud.point_step);
+      if (!p.allFinite()) {
+        ++out.non_finite_dropped;
+        continue;
+      }
+      out.points.push_back(p);
+      if (organized) out.grid.pixel.push_back(static_cast<std::uint32_t>(row * cloud.width + column));
+    }
+  }
+}
+
+template <typename T>
+T load_native(const std::uint8_t* p) {
+  T value;
+  std::memcpy(&value, p, sizeof(T));
+  return value;
+}
+
 }  // namespace
 
 std::string point_field_type_name(std::uint8_t datatype) {
@@ -172,19 +196,23 @@ CloudFile decode_pointcloud2(const PointCloud2& cloud, const std::string& name, 
     out.grid.height = cloud.height;
     out.grid.pixel.reserve(count);
   }
-  for (std::size_t row = 0; row < cloud.height; ++row) {
-    const std::uint8_t* row_start = cloud.data.data() + row * cloud.row_step;
-    for (std::size_t column = 0; column < cloud.width; ++column) {
-      const std::uint8_t* point = row_start + column * cloud.point_step;
-      const Point p(load_coordinate(point, xyz[0], swap), load_coordinate(point, xyz[1], swap),
-                    load_coordinate(point, xyz[2], swap));
-      if (!p.allFinite()) {
-        ++out.non_finite_dropped;
-        continue;
-      }
-      out.points.push_back(p);
-      if (organized) out.grid.pixel.push_back(static_cast<std::uint32_t>(row * cloud.width + column));
-    }
+  // The usual layouts (host byte order, x y z of one type) in a loop of their own: the same
+  // values as the general one, without its per-coordinate choices.
+  const bool one_type = xyz[0].f64 == xyz[1].f64 && xyz[1].f64 == xyz[2].f64;
+  const std::uint32_t ox = xyz[0].offset, oy = xyz[1].offset, oz = xyz[2].offset;
+  if (!swap && one_type && !xyz[0].f64) {
+    decode_points(cloud, organized, [&](const std::uint8_t* q) {
+      return Point(static_cast<double>(load_native<float>(q + ox)), static_cast<double>(load_native<float>(q + oy)),
+                   static_cast<double>(load_native<float>(q + oz)));
+    }, out);
+  } else if (!swap && one_type) {
+    decode_points(cloud, organized, [&](const std::uint8_t* q) {
+      return Point(load_native<double>(q + ox), load_native<double>(q + oy), load_native<double>(q + oz));
+    }, out);
+  } else {
+    decode_points(cloud, organized, [&](const std::uint8_t* q) {
+      return Point(load_coordinate(q, xyz[0], swap), load_coordinate(q, xyz[1], swap), load_coordinate(q, xyz[2], swap));
+    }, out);
   }
   return out;
 }
