@@ -119,30 +119,39 @@ std::vector<std::uint32_t> find_plane_boundary(const geometry::KdTree& tree,
                                                const std::vector<std::int32_t>& labels,
                                                std::int32_t label, const geometry::Plane& plane,
                                                const std::vector<std::uint32_t>& candidates,
-                                               const config::PlanesConfig& cfg) {
+                                               const config::PlanesConfig& cfg, parallel::ThreadPool* pool) {
   const PointList& cloud = tree.points();
   Eigen::Vector3d u, v;
   geometry::plane_basis(plane.normal, u, v);
   const double gap_limit = cfg.boundary_gap_degrees * kPi / 180.0;
-  std::vector<std::uint32_t> out, nb;
-  std::vector<double> angles;
-  for (std::uint32_t i : candidates) {
-    tree.knn(cloud[i], static_cast<std::size_t>(cfg.boundary_neighbours) + 1, nb);
-    angles.clear();
-    for (std::uint32_t j : nb) {
-      if (j == i || labels[j] != label) continue;
-      const Eigen::Vector3d d = cloud[j] - cloud[i];
-      angles.push_back(std::atan2(d.dot(v), d.dot(u)));
+  // Each block of candidates keeps its own boundary points; the blocks are joined in order.
+  constexpr std::size_t kGrain = 256;
+  std::vector<std::vector<std::uint32_t>> found((candidates.size() + kGrain - 1) / kGrain);
+  parallel::for_blocks(pool, candidates.size(), kGrain, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint32_t>& out = found[begin / kGrain];
+    std::vector<std::uint32_t> nb;
+    std::vector<double> angles;
+    for (std::size_t c = begin; c < end; ++c) {
+      const std::uint32_t i = candidates[c];
+      tree.knn(cloud[i], static_cast<std::size_t>(cfg.boundary_neighbours) + 1, nb);
+      angles.clear();
+      for (std::uint32_t j : nb) {
+        if (j == i || labels[j] != label) continue;
+        const Eigen::Vector3d d = cloud[j] - cloud[i];
+        angles.push_back(std::atan2(d.dot(v), d.dot(u)));
+      }
+      if (angles.size() < 2) {
+        out.push_back(i);
+        continue;
+      }
+      std::sort(angles.begin(), angles.end());
+      double gap = angles.front() + 2.0 * kPi - angles.back();
+      for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
+      if (gap > gap_limit) out.push_back(i);
     }
-    if (angles.size() < 2) {
-      out.push_back(i);
-      continue;
-    }
-    std::sort(angles.begin(), angles.end());
-    double gap = angles.front() + 2.0 * kPi - angles.back();
-    for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
-    if (gap > gap_limit) out.push_back(i);
-  }
+  });
+  std::vector<std::uint32_t> out;
+  for (const auto& block : found) out.insert(out.end(), block.begin(), block.end());
   return out;
 }
 
@@ -184,7 +193,8 @@ std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
 }
 
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg, const geometry::KdTree* shared_tree) {
+                                 const config::PlanesConfig& cfg, const geometry::KdTree* shared_tree,
+                                 parallel::ThreadPool* pool) {
   PlaneSegmentation out;
   out.labels.assign(cloud.size(), -1);
   if (cloud.size() < 3 || !(resolution > 0.0)) return out;
@@ -255,7 +265,7 @@ PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
   }
   for (std::size_t k = 0; k < out.planes.size(); ++k)
     out.planes[k].boundary = find_plane_boundary(tree, out.labels, static_cast<std::int32_t>(k),
-                                                 out.planes[k].plane, border_candidates[k], cfg);
+                                                 out.planes[k].plane, border_candidates[k], cfg, pool);
   out.lines = find_plane_lines(cloud, out.planes, resolution, cfg);
   return out;
 }

@@ -9,6 +9,7 @@
 #include "geometry/kdtree.hpp"
 #include "geometry/plane.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::pipeline {
 
@@ -40,9 +41,11 @@ struct PlaneSegmentation {
   std::vector<std::int32_t> labels;  // per point: index of its plane, or -1
 };
 
-// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages).
+// `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages). A `pool`
+// shares the boundary tests out: the same result.
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg, const geometry::KdTree* tree = nullptr);
+                                 const config::PlanesConfig& cfg, const geometry::KdTree* tree = nullptr,
+                                 parallel::ThreadPool* pool = nullptr);
 
 // Lines where two planes meet, clipped to where both planes' boundary points lie near.
 std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
@@ -50,11 +53,13 @@ std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
                                         double resolution, const config::PlanesConfig& cfg);
 
 // The `candidates` (points of plane `label`) on the border of their patch: points whose
-// in-plane angular gap between neighbours of the same plane exceeds cfg.boundary_gap_degrees.
+// in-plane angular gap between neighbours of the same plane exceeds cfg.boundary_gap_degrees;
+// in the candidates' order. A `pool` tests blocks of candidates on its threads: the same points.
 std::vector<std::uint32_t> find_plane_boundary(const geometry::KdTree& tree,
                                                const std::vector<std::int32_t>& labels,
                                                std::int32_t label, const geometry::Plane& plane,
                                                const std::vector<std::uint32_t>& candidates,
-                                               const config::PlanesConfig& cfg);
+                                               const config::PlanesConfig& cfg,
+                                               parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::pipeline

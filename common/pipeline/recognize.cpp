@@ -57,7 +57,9 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     StageClock object_clock;
     // One search tree over the object's points for every stage that needs neighbours.
     const geometry::KdTree tree(o.points);
-    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes, &tree);
+    // The pool splits an object's own work only while it is not busy with the objects: one
+    // object has both threads, several run side by side.
+    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes, &tree, pool);
     t.planes_ms = object_clock.lap_ms();
     const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints, &tree);
     t.keypoints_ms = object_clock.lap_ms();

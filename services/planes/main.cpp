@@ -2,6 +2,7 @@
 // call recognize_cloud makes, on the same float64 points).
 #include "common/service.hpp"
 #include "dds/convert.hpp"
+#include "parallel/thread_pool.hpp"
 #include "pipeline/planes.hpp"
 
 int main(int argc, char** argv) {
@@ -10,13 +11,15 @@ int main(int argc, char** argv) {
       argc, argv, "planes", "Finds planes and their lines (filtered cloud -> planes).");
   try {
     const cs::config::PipelineConfig cfg = cs::service::load_config(opt);
+    // execution.threads (or --threads): the boundary tests of an object's planes split over them.
+    cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
     return cs::service::run(
         opt, cs::dds::topics::filtered_cloud, cs::dds::topics::planes,
         [&](cs::msg::FilteredCloud& in) {
           const cs::PointList points = cs::dds::from_xyz(in.cloud().xyz());
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::PlaneSegmentation seg =
-              cs::pipeline::segment_planes(points, in.cloud().resolution(), cfg.planes);
+              cs::pipeline::segment_planes(points, in.cloud().resolution(), cfg.planes, nullptr, &pool);
           cs::msg::PlanesAndLines out;
           out.header(in.header());
           out.header().timings().planes_ms(cs::service::elapsed_ms(start));

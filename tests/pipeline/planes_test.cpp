@@ -74,5 +74,30 @@ TEST(Planes, BoundaryPointsLieOnTheFaceRim) {
   }
 }
 
+// The boundary tests split over a pool give what one thread gives: the same planes, labels and
+// boundary points in the same order, also where the candidates (here a whole face's points, some
+// thousands) make many blocks whose results are joined.
+TEST(Planes, ThreadPoolGivesTheSameSegmentation) {
+  const auto s = stage(synth::ShapeKind::box, {3.0, 2.0, 1.0});
+  const config::PipelineConfig cfg;
+  parallel::ThreadPool pool(3);
+  const PlaneSegmentation pooled = segment_planes(s.pre.points, s.pre.resolution, cfg.planes, nullptr, &pool);
+  ASSERT_EQ(pooled.planes.size(), s.planes.planes.size());
+  EXPECT_EQ(pooled.labels, s.planes.labels);
+  for (std::size_t k = 0; k < pooled.planes.size(); ++k) {
+    EXPECT_EQ(pooled.planes[k].inliers, s.planes.planes[k].inliers);
+    EXPECT_EQ(pooled.planes[k].boundary, s.planes.planes[k].boundary);
+  }
+  EXPECT_EQ(pooled.lines.size(), s.planes.lines.size());
+  const geometry::KdTree tree(s.pre.points);
+  const DetectedPlane& face = s.planes.planes.front();
+  ASSERT_GT(face.inliers.size(), 1000u);
+  const auto alone = find_plane_boundary(tree, s.planes.labels, 0, face.plane, face.inliers, cfg.planes);
+  const auto shared = find_plane_boundary(tree, s.planes.labels, 0, face.plane, face.inliers, cfg.planes, &pool);
+  EXPECT_EQ(shared, alone);
+  EXPECT_GT(alone.size(), 20u);  // the face's rim
+  EXPECT_LT(alone.size(), face.inliers.size() / 2);
+}
+
 }  // namespace
 }  // namespace cloudshape::pipeline
