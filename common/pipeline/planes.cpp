@@ -35,7 +35,8 @@ struct ScoringPoints {
 
 // Points in [begin, end) within `threshold` of the plane, with Plane::signed_distance's
 // arithmetic in its order ((nx x + ny y) + nz z) + d: two points at a time where SSE2 is (every
-// x86-64), the same IEEE operations per lane, so the same counts.
+// x86-64), the same IEEE operations per lane, so the same counts (the build enables no FMA that
+// could fuse one path's multiply-adds and not the other's).
 std::size_t count_near(const ScoringPoints& pts, std::size_t begin, std::size_t end, const geometry::Plane& plane,
                        double threshold) {
   const double nx = plane.normal.x(), ny = plane.normal.y(), nz = plane.normal.z(), d = plane.offset;
