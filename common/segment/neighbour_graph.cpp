@@ -19,17 +19,29 @@ constexpr double kMaxCellsPerAxis = 1 << 20;
 constexpr std::size_t kNodesPerBlock = 512;
 
 // Running first and second moments of a point set, for a normal without storing the points.
+// The second moments are symmetric: six sums, each the same products in the same order as the
+// full outer product's entry (the same covariance to the bit, two thirds of the work).
 struct Moments {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // subtracted first: keeps float64 sums exact enough far from 0
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
   std::size_t count = 0;
 
   void add(const Point& p) {
     const Eigen::Vector3d d = p - origin;
     sum += d;
-    outer.noalias() += d * d.transpose();
+    xx += d.x() * d.x();
+    xy += d.y() * d.x();
+    xz += d.z() * d.x();
+    yy += d.y() * d.y();
+    yz += d.z() * d.y();
+    zz += d.z() * d.z();
     ++count;
+  }
+  Eigen::Matrix3d outer() const {
+    Eigen::Matrix3d m;
+    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    return m;
   }
 };
 
@@ -45,7 +57,7 @@ void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, dou
     return;
   }
   const Eigen::Vector3d mean = m.sum / static_cast<double>(m.count);
-  const Eigen::Matrix3d cov = m.outer / static_cast<double>(m.count) - mean * mean.transpose();
+  const Eigen::Matrix3d cov = m.outer() / static_cast<double>(m.count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(cov);
   normal = eig.eigenvectors().col(0).normalized();
@@ -237,8 +249,29 @@ void orient_to_viewpoint(NeighbourGraph& g, const std::optional<Point>& viewpoin
   }
 }
 
+double finest_voxel(const PointList& points, parallel::ThreadPool* pool) {
+  if (points.empty()) return 0.0;
+  // Three times the sampling: 26-neighbour voxels must connect a surface's points where its
+  // sampling thins out. The extent bounds a cell index without squares, which underflow for a
+  // cloud of 1e-253 (found by fuzzing).
+  const geometry::Bounds box = geometry::bounding_box(points);
+  return std::max(3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool),
+                  (box.max - box.min).maxCoeff() / kMaxCellsPerAxis);
+}
+
+double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
+  if (points.empty()) return 0.0;
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  return std::max(geometry::bounding_box(points).diagonal() / std::sqrt(target), finest_voxel(points, pool));
+}
+
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
+  return build_voxel_graph(points, budget_voxel(points, cfg, pool), cfg.target_nodes, cfg, pool);
+}
+
+NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
+                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
   NeighbourGraph g;
   g.node_of_point.assign(points.size(), kNoNode);
   if (points.empty()) {
@@ -247,13 +280,11 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   }
   const geometry::Bounds box = geometry::bounding_box(points);
   const Point origin = box.min;
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
-  // Never finer than three times the sampling: 26-neighbour voxels must connect a surface's points
-  // where its sampling thins out. Nor so fine that a cell index leaves the key's 21 bits: the
-  // extent bounds it without squares, which underflow for a cloud of 1e-253 (found by fuzzing).
-  const double extent = (box.max - box.min).maxCoeff();
-  double voxel = std::max({box.diagonal() / std::sqrt(target),
-                           3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool), extent / kMaxCellsPerAxis, 1e-300});
+  // A budget of nodes caps the voxel count (1.3 times it); none: every voxel the points fill (a
+  // voxel never finer than finest_voxel fills no more than there are points).
+  const double target = static_cast<double>(std::max<std::int64_t>(1, max_nodes.value_or(0)));
+  const double cap = max_nodes ? 1.3 * target : static_cast<double>(points.size());
+  voxel = std::max(voxel, 1e-300);
 
   using Key = std::uint64_t;
   const auto key_of = [&](const Point& p, double v) {
@@ -264,7 +295,7 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   std::vector<Key> keys;
   std::vector<std::uint32_t> node;
   const auto bin = [&](double v) {
-    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(1.3 * target) + 1));
+    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(cap) + 1));
     keys.clear();
     node.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -273,14 +304,14 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
       node[i] = voxels.find_or_insert(key, static_cast<std::uint32_t>(keys.size()), inserted);
       if (inserted) {
         keys.push_back(key);
-        if (static_cast<double>(keys.size()) > 1.3 * target) return voxels;
+        if (static_cast<double>(keys.size()) > cap) return voxels;
       }
     }
     return voxels;
   };
   // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
   geometry::detail::CellMap voxels = bin(voxel);
-  for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > 1.3 * target; ++attempt) {
+  for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > cap; ++attempt) {
     voxel *= 1.25;
     voxels = bin(voxel);
   }

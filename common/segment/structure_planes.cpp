@@ -7,6 +7,7 @@
 
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
+#include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -60,15 +61,7 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     std::shuffle(sample.begin(), sample.end(), rng);
     sample.resize(kScoreSamples);
   }
-  // The sample's nodes side by side: every hypothesis scans them, is_inlier's test on a copy.
-  struct Scored {
-    Point node;
-    Eigen::Vector3d normal;
-    double limit;
-  };
-  std::vector<Scored> scored;
-  scored.reserve(sample.size());
-  for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
+  const ScoredNodes scored(g, sample, band);
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
   // Every hypothesis' seed drawn first, in order from the one generator; then the scoring in
   // blocks (any thread count), and the best taken in hypothesis order: the serial answer.
@@ -82,12 +75,7 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   std::vector<std::size_t> scores(hypotheses, 0);
   parallel::for_blocks(pool, hypotheses, 8, [&](std::size_t begin, std::size_t end) {
     for (std::size_t h = begin; h < end; ++h) {
-      const geometry::Plane& p = planes[h];
-      std::size_t score = 0;
-      for (const Scored& c : scored) {
-        score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
-      }
-      scores[h] = score;
+      scores[h] = count_plane_inliers(scored, planes[h], min_cos);
     }
   });
   geometry::Plane best;
