@@ -72,11 +72,22 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
   }
+  // A hypothesis only wins with more inliers than every one before it: its count stops once it
+  // cannot beat the best earlier one known (the first block's, then its own block's), and the
+  // first best stays the same for any thread count.
+  constexpr std::size_t kHypothesesPerBlock = 8;
   std::vector<std::size_t> scores(hypotheses, 0);
-  parallel::for_blocks(pool, hypotheses, 8, [&](std::size_t begin, std::size_t end) {
+  const auto score_block = [&](std::size_t begin, std::size_t end, std::size_t known) {
     for (std::size_t h = begin; h < end; ++h) {
-      scores[h] = count_plane_inliers(scored, planes[h], min_cos);
+      scores[h] = count_plane_inliers(scored, planes[h], min_cos, known);
+      known = std::max(known, scores[h]);  // a count stopped early is no more than `known`
     }
+  };
+  const std::size_t first = std::min(hypotheses, kHypothesesPerBlock);
+  score_block(0, first, 0);
+  const std::size_t first_best = first == 0 ? 0 : *std::max_element(scores.begin(), scores.begin() + first);
+  parallel::for_blocks(pool, hypotheses - first, kHypothesesPerBlock, [&](std::size_t begin, std::size_t end) {
+    score_block(first + begin, first + end, first_best);
   });
   geometry::Plane best;
   std::size_t best_score = 0;

@@ -21,7 +21,8 @@ ScoredNodes::ScoredNodes(const NeighbourGraph& g, const std::vector<std::uint32_
   }
 }
 
-std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane& p, double min_cos) {
+std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane& p, double min_cos,
+                                std::size_t must_beat) {
   const double a = p.normal.x(), b = p.normal.y(), c = p.normal.z(), offset = p.offset;
   const double* x = nodes.x.data();
   const double* y = nodes.y.data();
@@ -39,7 +40,10 @@ std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane&
   const __m128d va = _mm_set1_pd(a), vb = _mm_set1_pd(b), vc = _mm_set1_pd(c), voffset = _mm_set1_pd(offset);
   const __m128d vmin_cos = _mm_set1_pd(min_cos);
   const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
-  for (; j + 2 <= nodes.size(); j += 2) {
+  const std::size_t size = nodes.size();
+  for (; j + 2 <= size; j += 2) {
+    // Every 64 nodes: could the rest still lift the count above must_beat?
+    if ((j & 63) == 0 && count + (size - j) <= must_beat) return count;
     const __m128d distance = _mm_add_pd(
         _mm_add_pd(_mm_add_pd(_mm_mul_pd(va, _mm_loadu_pd(x + j)), _mm_mul_pd(vb, _mm_loadu_pd(y + j))),
                    _mm_mul_pd(vc, _mm_loadu_pd(z + j))),

@@ -22,6 +22,9 @@ struct ScoredNodes {
 // How many of the nodes lie within their limit of plane `p` with normals within acos(min_cos)
 // of its normal (either way): the same count, to the node, as testing each with
 // |p.signed_distance(node)| <= limit && |normal . p.normal| >= min_cos on Eigen vectors.
-std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane& p, double min_cos);
+// When that count cannot exceed `must_beat`, it may stop early and return a count no larger
+// than `must_beat` (a hypothesis that cannot win is not counted out).
+std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane& p, double min_cos,
+                                std::size_t must_beat = 0);
 
 }  // namespace cloudshape::segment

@@ -1,5 +1,5 @@
 // The structure planes' vectorised hypothesis scoring counts exactly the nodes is_inlier's
-// Eigen test accepts, also for nodes placed exactly on the distance and angle limits.
+// Eigen test accepts (also nodes exactly on the limits), and stops only counts that cannot win.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -28,7 +28,7 @@ TEST(StructureScoring, CountsAsIsInlierDoes) {
   std::normal_distribution<double> gauss(0.0, 1.0);
   const double band = 3.0;
   const double min_cos = std::cos(25.0 * 3.14159265358979323846 / 180.0);
-  std::size_t total = 0, boundary_cases = 0;
+  std::size_t total = 0, boundary_cases = 0, stopped = 0;
   for (int trial = 0; trial < 200; ++trial) {
     geometry::Plane p;
     p.normal = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
@@ -58,11 +58,22 @@ TEST(StructureScoring, CountsAsIsInlierDoes) {
       const ScoredNodes scored(g, nodes, band);
       const std::size_t expected = eigen_count(g, nodes, p, band, limit);
       EXPECT_EQ(count_plane_inliers(scored, p, limit), expected) << "trial " << trial;
+      // A bound to beat: the exact count above it, else a count no larger than it.
+      for (std::size_t beat : {expected / 2, expected, expected + 1, 2 * expected + 10}) {
+        const std::size_t got = count_plane_inliers(scored, p, limit, beat);
+        if (expected > beat) {
+          EXPECT_EQ(got, expected) << "trial " << trial << " beat " << beat;
+        } else {
+          EXPECT_LE(got, beat) << "trial " << trial << " beat " << beat;
+          stopped += got < expected ? 1 : 0;
+        }
+      }
       total += expected;
     }
   }
   EXPECT_GT(total, 1000u);  // the test holds inliers, not only outliers
   EXPECT_GT(boundary_cases, 1000u);
+  EXPECT_GT(stopped, 50u);  // counts that could not win did stop early
 }
 
 }  // namespace
