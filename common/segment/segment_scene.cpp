@@ -46,7 +46,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
                          : build_voxel_graph(points, cfg, pool);
   if (g.size() == 0) return out;
   if (!grid.organized()) {
-    if (!scan) scan = scan_origin(points, cfg);
+    if (!scan) scan = scan_origin(points, cfg, pool);
     orient_to_viewpoint(g, *scan);
   }
   out.viewpoint = g.viewpoint;

@@ -41,20 +41,27 @@ std::size_t count_plane_inliers(const ScoredNodes& nodes, const geometry::Plane&
   const __m128d vmin_cos = _mm_set1_pd(min_cos);
   const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
   const std::size_t size = nodes.size();
-  for (; j + 2 <= size; j += 2) {
-    // Every 64 nodes: could the rest still lift the count above must_beat?
-    if ((j & 63) == 0 && count + (size - j) <= must_beat) return count;
-    const __m128d distance = _mm_add_pd(
-        _mm_add_pd(_mm_add_pd(_mm_mul_pd(va, _mm_loadu_pd(x + j)), _mm_mul_pd(vb, _mm_loadu_pd(y + j))),
-                   _mm_mul_pd(vc, _mm_loadu_pd(z + j))),
-        voffset);
-    const __m128d cosine = _mm_add_pd(
-        _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(nx + j), va), _mm_mul_pd(_mm_loadu_pd(ny + j), vb)),
-        _mm_mul_pd(_mm_loadu_pd(nz + j), vc));
-    const __m128d near = _mm_cmple_pd(_mm_and_pd(distance, magnitude), _mm_loadu_pd(limit + j));
-    const __m128d aligned = _mm_cmpge_pd(_mm_and_pd(cosine, magnitude), vmin_cos);
-    const int mask = _mm_movemask_pd(_mm_and_pd(near, aligned));
-    count += static_cast<std::size_t>((mask & 1) + (mask >> 1));
+  // In chunks of 64 nodes, each lane's count kept as minus the sum of its all-ones masks; between
+  // chunks: could the rest still lift the count above must_beat?
+  constexpr std::size_t kChunk = 64;
+  for (; j + kChunk <= size; j += kChunk) {
+    if (count + (size - j) <= must_beat) return count;
+    __m128i lanes = _mm_setzero_si128();
+    for (std::size_t q = j; q < j + kChunk; q += 2) {
+      const __m128d distance = _mm_add_pd(
+          _mm_add_pd(_mm_add_pd(_mm_mul_pd(va, _mm_loadu_pd(x + q)), _mm_mul_pd(vb, _mm_loadu_pd(y + q))),
+                     _mm_mul_pd(vc, _mm_loadu_pd(z + q))),
+          voffset);
+      const __m128d cosine = _mm_add_pd(
+          _mm_add_pd(_mm_mul_pd(_mm_loadu_pd(nx + q), va), _mm_mul_pd(_mm_loadu_pd(ny + q), vb)),
+          _mm_mul_pd(_mm_loadu_pd(nz + q), vc));
+      const __m128d near = _mm_cmple_pd(_mm_and_pd(distance, magnitude), _mm_loadu_pd(limit + q));
+      const __m128d aligned = _mm_cmpge_pd(_mm_and_pd(cosine, magnitude), vmin_cos);
+      lanes = _mm_sub_epi64(lanes, _mm_castpd_si128(_mm_and_pd(near, aligned)));
+    }
+    alignas(16) std::int64_t lane[2];
+    _mm_store_si128(reinterpret_cast<__m128i*>(lane), lanes);
+    count += static_cast<std::size_t>(lane[0] + lane[1]);
   }
 #endif
   for (; j < nodes.size(); ++j) {
