@@ -15,16 +15,17 @@ std::optional<Point> scan_origin(const PointList& points, const config::SegmentC
   constexpr double kMinPerBeam = 10.0;
   // Fewer beams than the fewest a multi-beam lidar has: a plane through the origin fills one bin.
   constexpr std::size_t kMinBeams = 4;
-  constexpr std::size_t kPointsPerBlock = 16384;
   const double bin = cfg.scan_elevation_bin_degrees;
   if (!(bin > 0.0) || points.size() < kMinPoints) return std::nullopt;
-  // Each block of points counts its own bins; the counts are summed after.
-  const std::size_t blocks = (points.size() + kPointsPerBlock - 1) / kPointsPerBlock;
+  // Each block of points counts its own bins; the counts are summed after (integers: the same
+  // sums for any blocks, so one block when no other thread would take one).
+  const std::size_t per_block = pool != nullptr && pool->size() > 1 ? 16384 : points.size();
+  const std::size_t blocks = (points.size() + per_block - 1) / per_block;
   std::vector<std::unordered_map<std::int64_t, std::size_t>> block_counts(blocks);
   std::vector<std::size_t> block_used(blocks, 0);
-  parallel::for_blocks(pool, points.size(), kPointsPerBlock, [&](std::size_t begin, std::size_t end) {
-    auto& counts = block_counts[begin / kPointsPerBlock];
-    std::size_t& used = block_used[begin / kPointsPerBlock];
+  parallel::for_blocks(pool, points.size(), per_block, [&](std::size_t begin, std::size_t end) {
+    auto& counts = block_counts[begin / per_block];
+    std::size_t& used = block_used[begin / per_block];
     for (std::size_t i = begin; i < end; ++i) {
       const Point& p = points[i];
       const double horizontal = std::hypot(p.x(), p.y());
