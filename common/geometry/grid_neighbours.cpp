@@ -281,10 +281,9 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
       // coordinates apart so that the distances to all of them vectorise.
       std::vector<std::uint32_t> candidates;
       std::vector<double> cx, cy, cz, dist;
-      std::vector<std::uint32_t> near;
       std::vector<std::pair<double, std::uint32_t>> wide;
       std::vector<double> best_d(k);
-      std::vector<std::uint32_t> best_i(k);
+      std::vector<std::uint32_t> best_i(k), best_slot(k), earlier_slots;
       for (std::size_t s = cell_begin; s < cell_end; ++s) {
         const std::uint32_t* first = grid.members_begin(static_cast<std::uint32_t>(s));
         candidates.clear();
@@ -297,48 +296,68 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
         cy.resize(m);
         cz.resize(m);
         dist.resize(m);
-        near.resize(m);
         for (std::size_t j = 0; j < m; ++j) {
           cx[j] = points[candidates[j]].x();
           cy[j] = points[candidates[j]].y();
           cz[j] = points[candidates[j]].z();
         }
+        // The k nearest of each earlier point of this cell the block answered, as slots of the
+        // candidate list, nearest first.
+        std::size_t answered = 0;
+        earlier_slots.clear();
         for (const std::uint32_t* it = first; it != grid.members_end(static_cast<std::uint32_t>(s)); ++it) {
           const std::uint32_t i = *it;
           const double qx = points[i].x(), qy = points[i].y(), qz = points[i].z();
-          // squared_distance's sum, term by term. Only points within the block's reach can be
-          // among the k nearest, unless fewer than k are: then the kd-tree answers.
-          const double reach = grid.reach(points[i], 1);
-          const double limit = reach * reach;
-          std::size_t within = 0;
+          // squared_distance's sum, term by term.
           for (std::size_t j = 0; j < m; ++j) {
             const double dx = qx - cx[j], dy = qy - cy[j], dz = qz - cz[j];
             double d = dx * dx;
             d += dy * dy;
             d += dz * dz;
-            dist[within] = d;
-            near[within] = candidates[j];
-            within += d <= limit ? 1 : 0;
+            dist[j] = d;
           }
-          if (within < k) {
-            if (!nearest_in_wider_rings(grid, points, i, k, wide, out)) block_hard.push_back(i);
-            continue;
+          // Only points within the block's reach can be among the k nearest, unless fewer than
+          // k are: then wider rings or the kd-tree answer. The k nearest of an earlier point are
+          // k candidates too: this point's k nearest are no farther than the farthest of them (a
+          // bound from the same computed distances, so exact), which spares most of the ranking.
+          const double reach = grid.reach(points[i], 1);
+          double limit = reach * reach;
+          // The earlier point nearest this one (its own slot is the first of its k) gives the bound.
+          if (answered > 0) {
+            std::size_t nearest = 0;
+            for (std::size_t e = 1; e < answered; ++e) {
+              if (dist[earlier_slots[e * k]] < dist[earlier_slots[nearest * k]]) nearest = e;
+            }
+            double farthest = 0.0;
+            for (std::size_t j = 0; j < k; ++j) farthest = std::max(farthest, dist[earlier_slots[nearest * k + j]]);
+            limit = std::min(limit, farthest);
           }
-          std::size_t count = 0;
-          for (std::size_t j = 0; j < within; ++j) {
+          std::size_t within = 0, count = 0;
+          for (std::size_t j = 0; j < m; ++j) {
             const double d = dist[j];
-            const std::uint32_t id = near[j];
+            if (!(d <= limit)) continue;
+            ++within;
+            const std::uint32_t id = candidates[j];
             if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) continue;
             std::size_t at = count < k ? count++ : k - 1;
             while (at > 0 && closer(d, id, best_d[at - 1], best_i[at - 1])) {
               best_d[at] = best_d[at - 1];
               best_i[at] = best_i[at - 1];
+              best_slot[at] = best_slot[at - 1];
               --at;
             }
             best_d[at] = d;
             best_i[at] = id;
+            best_slot[at] = static_cast<std::uint32_t>(j);
+          }
+          // Fewer than k within the limit happens only when the reach sets it (the bound has k).
+          if (within < k) {
+            if (!nearest_in_wider_rings(grid, points, i, k, wide, out)) block_hard.push_back(i);
+            continue;
           }
           std::copy(best_i.begin(), best_i.end(), out.begin() + static_cast<std::ptrdiff_t>(i * k));
+          earlier_slots.insert(earlier_slots.end(), best_slot.begin(), best_slot.end());
+          ++answered;
         }
       }
     });

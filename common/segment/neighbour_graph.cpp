@@ -19,43 +19,68 @@ constexpr double kMaxCellsPerAxis = 1 << 20;
 constexpr std::size_t kNodesPerBlock = 512;
 
 // Running first and second moments of a point set, for a normal without storing the points.
+// The second moments are symmetric: six sums, each the same products in the same order as the
+// full outer product's entry (the same covariance to the bit, two thirds of the work).
 struct Moments {
   Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // subtracted first: keeps float64 sums exact enough far from 0
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
   std::size_t count = 0;
 
   void add(const Point& p) {
     const Eigen::Vector3d d = p - origin;
     sum += d;
-    outer.noalias() += d * d.transpose();
+    xx += d.x() * d.x();
+    xy += d.y() * d.x();
+    xz += d.z() * d.x();
+    yy += d.y() * d.y();
+    yz += d.z() * d.y();
+    zz += d.z() * d.z();
     ++count;
+  }
+  // At least one point added.
+  Eigen::Matrix3d covariance() const {
+    Eigen::Matrix3d outer;
+    outer << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    const Eigen::Vector3d mean = sum / static_cast<double>(count);
+    return outer / static_cast<double>(count) - mean * mean.transpose();
   }
 };
 
 // Normal (smallest principal direction) and surface variation; a default up normal when the
-// neighbourhood is too small to say. `spread`, if given: second over first standard deviation;
-// `major_axis`: the direction of the largest.
-void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, double* spread = nullptr,
-               Eigen::Vector3d* major_axis = nullptr) {
+// neighbourhood is too small to say. `spread`, if given: second over first standard deviation.
+void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, double* spread = nullptr) {
   if (spread) *spread = 1.0;
   if (m.count < 3) {
     normal = Eigen::Vector3d::UnitZ();
     curvature = 1.0 / 3.0;
     return;
   }
-  const Eigen::Vector3d mean = m.sum / static_cast<double>(m.count);
-  const Eigen::Matrix3d cov = m.outer / static_cast<double>(m.count) - mean * mean.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(cov);
+  eig.computeDirect(m.covariance());
   normal = eig.eigenvectors().col(0).normalized();
   const double total = eig.eigenvalues().sum();
   curvature = total > 0.0 ? std::max(0.0, eig.eigenvalues()(0)) / total : 0.0;
-  if (major_axis) *major_axis = eig.eigenvectors().col(2);
   if (spread) {
     const double major = eig.eigenvalues()(2);
     *spread = major > 0.0 ? std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / major) : 0.0;
   }
+}
+
+// Whether a neighbourhood of three points or more spreads less than `line` across its length
+// (normal_of's spread, from the eigenvalues alone: the direct solver computes them the same way
+// with or without eigenvectors), and then its direction (the largest principal one, unit).
+bool along_a_line(const Moments& m, double line, Eigen::Vector3d& direction) {
+  if (m.count < 3) return false;
+  const Eigen::Matrix3d cov = m.covariance();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(cov, Eigen::EigenvaluesOnly);
+  const double major = eig.eigenvalues()(2);
+  const double spread = major > 0.0 ? std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / major) : 0.0;
+  if (spread >= line) return false;
+  eig.computeDirect(cov);
+  direction = eig.eigenvectors().col(2).normalized();
+  return true;
 }
 
 // The CSR adjacency with the extra (symmetric) edges added, each neighbour listed once.
@@ -214,12 +239,14 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
       const std::ptrdiff_t py = static_cast<std::ptrdiff_t>(node_pixel[n] / width);
       Moments m;
       m.origin = g.nodes[n];
-      for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach);
-           y <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach); y += step) {
-        for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, px - reach);
-             x <= std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach); x += step) {
-          const std::int32_t i = image[static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x)];
-          if (i >= 0 && same_surface(range[n], point_range[i])) m.add(points[i]);
+      const double node_range = range[n];
+      const std::ptrdiff_t x_end = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach);
+      const std::ptrdiff_t y_end = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach);
+      for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach); y <= y_end; y += step) {
+        const std::int32_t* row = image.data() + static_cast<std::size_t>(y) * width;
+        for (std::ptrdiff_t x = std::max<std::ptrdiff_t>(0, px - reach); x <= x_end; x += step) {
+          const std::int32_t i = row[x];
+          if (i >= 0 && same_surface(node_range, point_range[i])) m.add(points[i]);
         }
       }
       normal_of(m, g.normals[n], g.curvature[n]);
@@ -237,8 +264,37 @@ void orient_to_viewpoint(NeighbourGraph& g, const std::optional<Point>& viewpoin
   }
 }
 
+namespace {
+
+// finest_voxel of points within `box`.
+double finest_in(const PointList& points, const geometry::Bounds& box, parallel::ThreadPool* pool) {
+  // Three times the sampling: 26-neighbour voxels must connect a surface's points where its
+  // sampling thins out. The extent bounds a cell index without squares, which underflow for a
+  // cloud of 1e-253 (found by fuzzing).
+  return std::max(3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool),
+                  (box.max - box.min).maxCoeff() / kMaxCellsPerAxis);
+}
+
+}  // namespace
+
+double finest_voxel(const PointList& points, parallel::ThreadPool* pool) {
+  return points.empty() ? 0.0 : finest_in(points, geometry::bounding_box(points), pool);
+}
+
+double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
+  if (points.empty()) return 0.0;
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  const geometry::Bounds box = geometry::bounding_box(points);
+  return std::max(box.diagonal() / std::sqrt(target), finest_in(points, box, pool));
+}
+
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
+  return build_voxel_graph(points, budget_voxel(points, cfg, pool), cfg.target_nodes, cfg, pool);
+}
+
+NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
+                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
   NeighbourGraph g;
   g.node_of_point.assign(points.size(), kNoNode);
   if (points.empty()) {
@@ -247,13 +303,11 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   }
   const geometry::Bounds box = geometry::bounding_box(points);
   const Point origin = box.min;
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
-  // Never finer than three times the sampling: 26-neighbour voxels must connect a surface's points
-  // where its sampling thins out. Nor so fine that a cell index leaves the key's 21 bits: the
-  // extent bounds it without squares, which underflow for a cloud of 1e-253 (found by fuzzing).
-  const double extent = (box.max - box.min).maxCoeff();
-  double voxel = std::max({box.diagonal() / std::sqrt(target),
-                           3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool), extent / kMaxCellsPerAxis, 1e-300});
+  // A budget of nodes caps the voxel count (1.3 times it); none: every voxel the points fill (a
+  // voxel never finer than finest_voxel fills no more than there are points).
+  const double target = static_cast<double>(std::max<std::int64_t>(1, max_nodes.value_or(0)));
+  const double cap = max_nodes ? 1.3 * target : static_cast<double>(points.size());
+  voxel = std::max(voxel, 1e-300);
 
   using Key = std::uint64_t;
   const auto key_of = [&](const Point& p, double v) {
@@ -264,7 +318,7 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   std::vector<Key> keys;
   std::vector<std::uint32_t> node;
   const auto bin = [&](double v) {
-    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(1.3 * target) + 1));
+    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(cap) + 1));
     keys.clear();
     node.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -273,14 +327,14 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
       node[i] = voxels.find_or_insert(key, static_cast<std::uint32_t>(keys.size()), inserted);
       if (inserted) {
         keys.push_back(key);
-        if (static_cast<double>(keys.size()) > 1.3 * target) return voxels;
+        if (static_cast<double>(keys.size()) > cap) return voxels;
       }
     }
     return voxels;
   };
   // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
   geometry::detail::CellMap voxels = bin(voxel);
-  for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > 1.3 * target; ++attempt) {
+  for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > cap; ++attempt) {
     voxel *= 1.25;
     voxels = bin(voxel);
   }
@@ -365,20 +419,14 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   // A node whose voxel neighbours lie on a line through it (one on each side at least: a pair of
   // stray points is no ring) sits on one scan ring.
   std::vector<Eigen::Vector3d> line_of(g.size(), Eigen::Vector3d::Zero());
-  // One closed-form eigen decomposition of the moments gives both the spread and the line.
+  // The eigenvalues alone tell the spread; the eigenvectors are computed only for the few on a line.
   parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n) {
       Moments m;
       m.origin = g.nodes[n];
       m.add(g.nodes[n]);
       g.for_neighbours(static_cast<std::uint32_t>(n), [&](std::uint32_t j) { m.add(g.nodes[j]); });
-      if (m.count < 3) continue;
-      Eigen::Vector3d normal;
-      double curvature = 0.0, spread = 1.0;
-      Eigen::Vector3d major;
-      normal_of(m, normal, curvature, &spread, &major);
-      if (spread >= cfg.line_spread) continue;
-      line_of[n] = major.normalized();
+      if (!along_a_line(m, cfg.line_spread, line_of[n])) continue;
       if (!line_of[n].allFinite()) line_of[n].setZero();
     }
   });

@@ -40,12 +40,26 @@ struct NeighbourGraph {
 NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& grid,
                                      const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
 
-// Any cloud: voxels whose edge is chosen so that about cfg.target_nodes are occupied; a
-// voxel's node is its centroid, 26-neighbour voxels are connected; normals from the
-// cfg.normal_neighbours nearest nodes, unoriented (no viewpoint). A `pool` runs the neighbour
-// search and the normals in blocks of nodes: the same graph.
+// The finest voxel edge a graph of `points` may have: three mean nearest-neighbour distances (a
+// sample of 4 000; the same for any `pool`), and no finer than a cell key's 21 bits per axis allow.
+double finest_voxel(const PointList& points, parallel::ThreadPool* pool = nullptr);
+
+// The voxel edge build_voxel_graph starts from: the bounding box's diagonal over the square root
+// of cfg.target_nodes (a surface fills voxels with the inverse square of the edge), never finer
+// than finest_voxel.
+double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
+
+// Any cloud: voxels of budget_voxel's edge, grown by a quarter at a time while more than 1.3
+// cfg.target_nodes are occupied; a voxel's node is its centroid, 26-neighbour voxels are
+// connected; normals from the cfg.normal_neighbours nearest nodes, unoriented (no viewpoint).
+// A `pool` runs the neighbour search and the normals in blocks of nodes: the same graph.
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool = nullptr);
+
+// The same with the voxel edge given (never below 1e-300), grown only while more than 1.3
+// `max_nodes` are occupied (none: not grown).
+NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
+                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
 
 // Sets the graph's viewpoint and, when there is one, turns every normal towards it (a lidar
 // frame seen from its sensor).

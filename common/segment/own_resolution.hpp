@@ -7,12 +7,14 @@
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::segment {
 
-// Whether the segment's points `own`, gridded alone for cfg.target_nodes voxels (never finer
-// than three mean neighbour distances, build_voxel_graph's floor), gets a voxel at least
-// cfg.remainder_refine times finer than `spacing`, the node spacing it has in the scene's graph.
-bool finer_on_its_own(const PointList& own, double spacing, const config::SegmentConfig& cfg);
+// Whether the segment's points `own`, gridded alone (budget_voxel: build_voxel_graph's voxel
+// before any growth), get a voxel at least cfg.remainder_refine times finer than `spacing`, the
+// node spacing they have in the scene's graph. A `pool` runs the sampling estimate: the same answer.
+bool finer_on_its_own(const PointList& own, double spacing, const config::SegmentConfig& cfg,
+                      parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::segment

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/voxel_grid.hpp"
-
 namespace cloudshape::segment {
 
 std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, const NeighbourGraph& graph,
@@ -22,6 +20,12 @@ std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, con
   if (kept_nodes == 0) return std::nullopt;
   std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
   const double coarse = spacing[spacing.size() / 2];
+  // The voxel for the node budget alone; the sampling's floor can only make it coarser, so a
+  // budget voxel already too coarse settles it before any pass over the points (an isolated
+  // solid: nearly every node kept, the voxel the graph has).
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  const double for_budget = coarse * std::sqrt(static_cast<double>(kept_nodes) / target);
+  if (for_budget * cfg.remainder_refine > coarse) return std::nullopt;
 
   RemainderGraph out;
   PointList rest;
@@ -31,18 +35,9 @@ std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, con
     out.points.push_back(i);
     rest.push_back(points[i]);
   }
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
-  const double finest = 3.0 * geometry::mean_nearest_neighbour_distance(rest);
-  const double voxel = std::max(finest, coarse * std::sqrt(static_cast<double>(kept_nodes) / target));
+  const double voxel = std::max(finest_voxel(rest, pool), for_budget);
   if (!(voxel > 0.0) || voxel * cfg.remainder_refine > coarse) return std::nullopt;
-  // build_voxel_graph takes its voxel from the diagonal and the node budget: the budget that gives
-  // this voxel (it is never finer than its own floor either).
-  const geometry::Bounds box = geometry::bounding_box(rest);
-  config::SegmentConfig fine = cfg;
-  const double budget = std::pow(box.diagonal() / voxel, 2.0);
-  if (!(budget < 1e15)) return std::nullopt;
-  fine.target_nodes = static_cast<std::int64_t>(budget) + 1;
-  out.graph = build_voxel_graph(rest, fine, pool);
+  out.graph = build_voxel_graph(rest, voxel, std::nullopt, cfg, pool);
   orient_to_viewpoint(out.graph, graph.viewpoint);
   return out;
 }

@@ -18,11 +18,12 @@ struct RemainderGraph {
   std::vector<std::uint32_t> points;  // the remaining input points, indices into the input
 };
 
-// The points of the nodes not `removed`, as a voxel graph of their own whose voxel is chosen so
-// that they fill about cfg.target_nodes nodes (a surface fills voxels with the inverse square
-// of the edge), never finer than build_voxel_graph's own floor (its sampling). None when that
-// voxel is not at least cfg.remainder_refine times finer than `graph`'s spacing: the graph
-// already holds the remainder at its resolution. Keeps `graph`'s viewpoint (normals towards it).
+// The points of the nodes not `removed`, as a voxel graph of their own whose voxel edge is
+// chosen so that they fill about cfg.target_nodes nodes (`graph`'s median node spacing times the
+// square root of kept nodes over the budget: a surface fills voxels with the inverse square of
+// the edge), never finer than finest_voxel (their sampling). None when that voxel is not at
+// least cfg.remainder_refine times finer than that spacing: the graph already holds the
+// remainder at its resolution. Keeps `graph`'s viewpoint (normals towards it).
 std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, const NeighbourGraph& graph,
                                                     const std::vector<char>& removed,
                                                     const config::SegmentConfig& cfg,

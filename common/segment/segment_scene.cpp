@@ -46,7 +46,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
                          : build_voxel_graph(points, cfg, pool);
   if (g.size() == 0) return out;
   if (!grid.organized()) {
-    if (!scan) scan = scan_origin(points, cfg);
+    if (!scan) scan = scan_origin(points, cfg, pool);
     orient_to_viewpoint(g, *scan);
   }
   out.viewpoint = g.viewpoint;
@@ -101,7 +101,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       PointList own;
       own.reserve(segment_points[s].size());
       for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
-      if (finer_on_its_own(own, spacing[spacing.size() / 2], cfg)) {
+      if (finer_on_its_own(own, spacing[spacing.size() / 2], cfg, pool)) {
         for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan).objects) {
           for (std::uint32_t& i : part) i = segment_points[s][i];
           refined.push_back(std::move(part));

@@ -7,6 +7,7 @@
 
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
+#include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -60,15 +61,7 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     std::shuffle(sample.begin(), sample.end(), rng);
     sample.resize(kScoreSamples);
   }
-  // The sample's nodes side by side: every hypothesis scans them, is_inlier's test on a copy.
-  struct Scored {
-    Point node;
-    Eigen::Vector3d normal;
-    double limit;
-  };
-  std::vector<Scored> scored;
-  scored.reserve(sample.size());
-  for (std::uint32_t n : sample) scored.push_back({g.nodes[n], g.normals[n], band * g.spacing[n]});
+  const ScoredNodes scored(g, sample, band);
   std::uniform_int_distribution<std::size_t> pick(0, seeds.size() - 1);
   // Every hypothesis' seed drawn first, in order from the one generator; then the scoring in
   // blocks (any thread count), and the best taken in hypothesis order: the serial answer.
@@ -79,16 +72,22 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
     p.normal = g.normals[s];
     p.offset = -p.normal.dot(g.nodes[s]);
   }
+  // A hypothesis only wins with more inliers than every one before it: its count stops once it
+  // cannot beat the best earlier one known (the first block's, then its own block's), and the
+  // first best stays the same for any thread count.
+  constexpr std::size_t kHypothesesPerBlock = 8;
   std::vector<std::size_t> scores(hypotheses, 0);
-  parallel::for_blocks(pool, hypotheses, 8, [&](std::size_t begin, std::size_t end) {
+  const auto score_block = [&](std::size_t begin, std::size_t end, std::size_t known) {
     for (std::size_t h = begin; h < end; ++h) {
-      const geometry::Plane& p = planes[h];
-      std::size_t score = 0;
-      for (const Scored& c : scored) {
-        score += std::abs(p.signed_distance(c.node)) <= c.limit && std::abs(c.normal.dot(p.normal)) >= min_cos ? 1 : 0;
-      }
-      scores[h] = score;
+      scores[h] = count_plane_inliers(scored, planes[h], min_cos, known);
+      known = std::max(known, scores[h]);  // a count stopped early is no more than `known`
     }
+  };
+  const std::size_t first = std::min(hypotheses, kHypothesesPerBlock);
+  score_block(0, first, 0);
+  const std::size_t first_best = first == 0 ? 0 : *std::max_element(scores.begin(), scores.begin() + first);
+  parallel::for_blocks(pool, hypotheses - first, kHypothesesPerBlock, [&](std::size_t begin, std::size_t end) {
+    score_block(first + begin, first + end, first_best);
   });
   geometry::Plane best;
   std::size_t best_score = 0;

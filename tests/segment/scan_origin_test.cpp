@@ -37,6 +37,9 @@ TEST(SegmentScanOrigin, ALidarFrameSeesFromTheOrigin) {
       const auto origin = scan_origin(frame, kCfg);
       ASSERT_TRUE(origin.has_value()) << rings << " rings, seed " << seed;
       EXPECT_EQ(origin->norm(), 0.0);
+      // Blocks of points binned on a pool: the same beams.
+      parallel::ThreadPool pool(3);
+      EXPECT_TRUE(scan_origin(frame, kCfg, &pool).has_value()) << rings << " rings, seed " << seed;
     }
   }
 }
@@ -45,6 +48,8 @@ TEST(SegmentScanOrigin, TheSameFrameOffTheOriginIsNot) {
   PointList frame = lidar_frame(1, 32);
   for (Point& p : frame) p += Point(0.7, -0.4, 1.3);
   EXPECT_FALSE(scan_origin(frame, kCfg).has_value());
+  parallel::ThreadPool pool(3);
+  EXPECT_FALSE(scan_origin(frame, kCfg, &pool).has_value());
 }
 
 TEST(SegmentScanOrigin, SampledSolidsAreNot) {

@@ -3,11 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <random>
 
 #include "config/stage_configs.hpp"
 #include "geometry/pca.hpp"
+#include "geometry/voxel_grid.hpp"
 #include "segment/neighbour_graph.hpp"
 
 namespace cloudshape::segment {
@@ -77,6 +80,30 @@ TEST(SegmentVoxelGraph, NormalsAreThoseOfTheNearestNodes) {
       EXPECT_GT(std::abs(pca.eigenvectors.col(0).dot(g.normals[n])), 1.0 - 1e-6) << "node " << n;
     }
   }
+}
+
+TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
+  config::SegmentConfig cfg;
+  cfg.target_nodes = 50;  // a budget this small would grow any voxel fine enough for 30 000 points
+  const PointList pts = tilted_box(30000, 3);
+  const double voxel = 2.0 * finest_voxel(pts);
+  ASSERT_GT(voxel, 0.0);
+  const NeighbourGraph g = build_voxel_graph(pts, voxel, std::nullopt, cfg);
+  ASSERT_GT(static_cast<double>(g.size()), 1.3 * static_cast<double>(cfg.target_nodes));
+  // Two points share a node exactly when they share a voxel of that edge from the box's corner.
+  const geometry::Bounds box = geometry::bounding_box(pts);
+  std::map<std::array<std::int64_t, 3>, std::uint32_t> node_of_voxel;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const Eigen::Vector3d c = ((pts[i] - box.min) / voxel).array().floor();
+    const std::array<std::int64_t, 3> key{static_cast<std::int64_t>(c.x()), static_cast<std::int64_t>(c.y()),
+                                          static_cast<std::int64_t>(c.z())};
+    const auto [it, added] = node_of_voxel.emplace(key, g.node_of_point[i]);
+    EXPECT_EQ(it->second, g.node_of_point[i]) << "point " << i;
+  }
+  EXPECT_EQ(node_of_voxel.size(), g.size());
+  // With the budget, the same voxel grows until at most 1.3 times the budget are occupied.
+  EXPECT_LE(static_cast<double>(build_voxel_graph(pts, voxel, cfg.target_nodes, cfg).size()),
+            1.3 * static_cast<double>(cfg.target_nodes));
 }
 
 }  // namespace
