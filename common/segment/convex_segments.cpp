@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 #include "geometry/pca.hpp"
@@ -101,7 +102,7 @@ void orient_normals_outward(NeighbourGraph& g, const std::vector<char>& removed)
 }
 
 std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::vector<char>& removed,
-                                          const config::SegmentConfig& cfg) {
+                                          const config::SegmentConfig& cfg, bool depth_image) {
   const double smooth_cos = std::cos(cfg.smooth_degrees * kPi / 180.0);
   const double tolerance_cos = std::cos(cfg.convex_tolerance_degrees * kPi / 180.0);
   // Patches grow over surface nodes only: edge and corner nodes (curved beyond
@@ -171,16 +172,19 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   for (std::uint32_t n = 0; n < g.size(); ++n) {
     if (patch[n] >= 0) ++patch_size[patch[n]];
   }
-  std::vector<char> surface(g.size(), 0);
-  for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
-  const CreaseOverlap crease(g, patch, surface, patches, cfg.crease_band);
-  // In a view (normals towards a known sensor) patches of min_object_nodes or more join first; a junction they reject (concave, or no
-  // shared crease) is remembered. A sliver (an edge's noise, a step's strip finer than the graph)
+  // In a depth image patches of min_object_nodes or more join first; a junction they reject
+  // (concave, or no shared crease) is remembered. A sliver (an edge's noise, a step's strip finer than the graph)
   // is too small to judge by: it joins across its convex junctions in a second pass, but never
-  // two groups whose own junction was rejected, which it would bridge. Without a viewpoint the
-  // normals are turned outward from a centroid, which flips them across a non-convex solid's
-  // faces (a star or plus prism's): neither rule is applied there, where they split such solids.
-  const bool in_view = g.viewpoint.has_value();
+  // two groups whose own junction was rejected, which it would bridge. Neither rule is applied
+  // elsewhere, where both split solids (measured): without a viewpoint the normals are turned
+  // outward from a centroid, which flips them across a non-convex solid's faces (a star or plus
+  // prism's); a lidar's rings cut every face into strips whose spans say nothing of the face.
+  std::optional<CreaseOverlap> crease;
+  if (depth_image) {
+    std::vector<char> surface(g.size(), 0);
+    for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
+    crease.emplace(g, patch, surface, patches, cfg.crease_band);
+  }
   std::vector<std::uint64_t> keys;
   keys.reserve(junctions.size());
   for (const auto& entry : junctions) keys.push_back(entry.first);
@@ -192,9 +196,9 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     const auto a = static_cast<std::uint32_t>(key >> 32);
     const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
     const bool joins = static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total) &&
-                       (!in_view || crease.shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
+                       (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
     const bool slivers =
-        in_view && static_cast<std::int64_t>(std::min(patch_size[a], patch_size[b])) < cfg.min_object_nodes;
+        depth_image && static_cast<std::int64_t>(std::min(patch_size[a], patch_size[b])) < cfg.min_object_nodes;
     if (slivers) {
       if (joins) sliver_joins.push_back(key);
     } else if (joins) {

@@ -97,8 +97,8 @@ TEST(SegmentConvexity, DISABLED_TwoTouchingBoxesComeApart) {
 // centroid of both spheres turn inwards near the contact, where the valley is; carrying the
 // orientation over the graph (Hoppe's propagation, tried) carries one sphere's into the other at
 // the contact, where their normals are parallel, and split YCB cans and noisy clouds elsewhere.
-// The crease and sliver rules of convex_segments hold in views only (they split star and plus
-// prisms whose normals are turned outward from the centroid).
+// The crease and sliver rules of convex_segments hold in organized clouds only (they split star
+// and plus prisms whose normals are turned outward from the centroid).
 TEST(SegmentConvexity, DISABLED_TwoTouchingSpheresComeApart) {
   const Split s = split({synth::make_solid(synth::ShapeKind::sphere, {1.0}, at(0, 0, 0)),
                          synth::make_solid(synth::ShapeKind::sphere, {1.0}, at(2, 0, 0))},
