@@ -173,9 +173,9 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     if (patch[n] >= 0) ++patch_size[patch[n]];
   }
   // In a depth image patches of min_object_nodes or more join first; a junction they reject
-  // (concave, or no shared crease) is remembered. A sliver (an edge's noise, a step's strip finer than the graph)
-  // is too small to judge by: it joins across its convex junctions in a second pass, but never
-  // two groups whose own junction was rejected, which it would bridge. Neither rule is applied
+  // (concave, or no shared crease) is remembered. A sliver (an edge's noise, a step's strip finer
+  // than the graph) is too small to judge by: it joins across its convex junctions in a second
+  // pass, but never two groups whose own junction was rejected, which it would bridge. Neither rule is applied
   // elsewhere, where both split solids (measured): without a viewpoint the normals are turned
   // outward from a centroid, which flips them across a non-convex solid's faces (a star or plus
   // prism's); a lidar's rings cut every face into strips whose spans say nothing of the face.
