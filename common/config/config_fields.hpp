@@ -47,6 +47,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("edge_curvature", c.edge_curvature);
   f("convex_tolerance_degrees", c.convex_tolerance_degrees);
   f("convex_share", c.convex_share);
+  f("crease_overlap", c.crease_overlap);
+  f("crease_band", c.crease_band);
   f("cavity_concavity", c.cavity_concavity);
   f("cavity_gap", c.cavity_gap);
   f("structure_max_planes", c.structure_max_planes);

@@ -102,6 +102,8 @@ struct SegmentConfig {
   double edge_curvature = 0.04;            // ... over surface nodes: a node curved more than this (surface variation) lies on an edge
   double convex_tolerance_degrees = 15.0;  // a junction whose normals differ by less than this is convex whatever its sign
   double convex_share = 0.5;               // adjacent patches join when at least this share of their junction is convex
+  double crease_overlap = 0.5;             // ... and, meeting at an angle, their spans along the crease overlap by this share of the shorter (0: off)
+  double crease_band = 4.0;                // ... (each patch's nodes within this many node spacings of the other's plane)
   double cavity_concavity = 0.3;           // a segment this concave towards the sensor (mean n . (x - c) over its RMS spread) is a container's inside: it joins the container ...
   double cavity_gap = 10.0;                 // ... the segment with the most nodes within this many node spacings of it
   std::int64_t structure_max_planes = 8;   // structure planes (table, floor, walls) removed at most

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <unordered_map>
 
 #include "geometry/pca.hpp"
+#include "segment/crease_overlap.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -100,7 +102,7 @@ void orient_normals_outward(NeighbourGraph& g, const std::vector<char>& removed)
 }
 
 std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::vector<char>& removed,
-                                          const config::SegmentConfig& cfg) {
+                                          const config::SegmentConfig& cfg, bool depth_image) {
   const double smooth_cos = std::cos(cfg.smooth_degrees * kPi / 180.0);
   const double tolerance_cos = std::cos(cfg.convex_tolerance_degrees * kPi / 180.0);
   // Patches grow over surface nodes only: edge and corner nodes (curved beyond
@@ -166,10 +168,69 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     });
   }
   UnionFind segments(static_cast<std::size_t>(patches));
-  for (const auto& [key, j] : junctions) {
-    if (static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total)) {
-      segments.join(static_cast<std::uint32_t>(key >> 32), static_cast<std::uint32_t>(key & 0xffffffffu));
+  std::vector<std::size_t> patch_size(static_cast<std::size_t>(patches), 0);
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    if (patch[n] >= 0) ++patch_size[patch[n]];
+  }
+  // In a depth image patches of min_object_nodes or more join first; a junction they reject
+  // (concave, or no shared crease) is remembered. A sliver (an edge's noise, a step's strip finer
+  // than the graph) is too small to judge by: it joins across its convex junctions in a second
+  // pass, but never two groups whose own junction was rejected, which it would bridge. Neither rule is applied
+  // elsewhere, where both split solids (measured): without a viewpoint the normals are turned
+  // outward from a centroid, which flips them across a non-convex solid's faces (a star or plus
+  // prism's); a lidar's rings cut every face into strips whose spans say nothing of the face.
+  std::optional<CreaseOverlap> crease;
+  if (depth_image) {
+    std::vector<char> surface(g.size(), 0);
+    for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
+    crease.emplace(g, patch, surface, patches, cfg.crease_band);
+  }
+  std::vector<std::uint64_t> keys;
+  keys.reserve(junctions.size());
+  for (const auto& entry : junctions) keys.push_back(entry.first);
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::vector<std::uint32_t>> rejected(static_cast<std::size_t>(patches));
+  std::vector<std::uint64_t> sliver_joins;
+  for (std::uint64_t key : keys) {
+    const Junction& j = junctions.at(key);
+    const auto a = static_cast<std::uint32_t>(key >> 32);
+    const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
+    const bool joins = static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total) &&
+                       (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
+    const bool slivers =
+        depth_image && static_cast<std::int64_t>(std::min(patch_size[a], patch_size[b])) < cfg.min_object_nodes;
+    if (slivers) {
+      if (joins) sliver_joins.push_back(key);
+    } else if (joins) {
+      segments.join(a, b);
+    } else {
+      rejected[a].push_back(b);
+      rejected[b].push_back(a);
     }
+  }
+  // Rejections per group root, so that a check sees every member's.
+  std::vector<std::vector<std::uint32_t>> rejected_by_root(static_cast<std::size_t>(patches));
+  for (std::uint32_t p = 0; p < static_cast<std::uint32_t>(patches); ++p) {
+    auto& into = rejected_by_root[segments.find(p)];
+    into.insert(into.end(), rejected[p].begin(), rejected[p].end());
+  }
+  for (std::uint64_t key : sliver_joins) {
+    const std::uint32_t ra = segments.find(static_cast<std::uint32_t>(key >> 32));
+    const std::uint32_t rb = segments.find(static_cast<std::uint32_t>(key & 0xffffffffu));
+    if (ra == rb) continue;
+    const auto apart = [&](std::uint32_t from, std::uint32_t to) {
+      for (std::uint32_t other : rejected_by_root[from]) {
+        if (segments.find(other) == to) return true;
+      }
+      return false;
+    };
+    if (apart(ra, rb) || apart(rb, ra)) continue;
+    segments.join(ra, rb);
+    const std::uint32_t root = segments.find(ra);
+    auto& kept = rejected_by_root[root];
+    auto& gone = rejected_by_root[root == ra ? rb : ra];
+    kept.insert(kept.end(), gone.begin(), gone.end());
+    gone.clear();
   }
 
   // Small segments (edge slivers, noise) join the neighbour they share most edges with.

@@ -22,12 +22,17 @@ std::vector<char> narrow_groups(const NeighbourGraph& graph, const std::vector<s
 
 // Per node, its segment (0, 1, ...) or -1 for removed nodes. Patches grow over surface nodes
 // (curvature under cfg.edge_curvature) across edges whose normals differ by less than
-// cfg.smooth_degrees (a narrow component, a line, stays whole); edge nodes then join the nearest patch. Two adjacent patches join when at
-// least cfg.convex_share of the edges between them are convex, judged between the surface nodes
-// either side of the edge band ((n_a - n_b) . (x_a - x_b) >= 0, or normals within
-// cfg.convex_tolerance_degrees); a segment with fewer than cfg.min_object_nodes nodes is then
-// absorbed by the neighbour it shares most edges with.
+// cfg.smooth_degrees (a narrow component, a line, stays whole); edge nodes then join the nearest
+// patch. Two adjacent patches join when at least cfg.convex_share of the edges between them are
+// convex, judged between the surface nodes either side of the edge band
+// ((n_a - n_b) . (x_a - x_b) >= 0, or normals within cfg.convex_tolerance_degrees). In a depth
+// image (`depth_image`: an organized cloud's graph, whose nodes tile every face seen) two more
+// rules hold: patches meeting at an angle must share their crease
+// (CreaseOverlap, cfg.crease_overlap and cfg.crease_band), and a patch under cfg.min_object_nodes
+// joins in a second pass, never bridging two groups whose own junction was rejected. A segment
+// with fewer than cfg.min_object_nodes nodes is then absorbed by the neighbour it shares most
+// edges with.
 std::vector<std::int32_t> convex_segments(const NeighbourGraph& graph, const std::vector<char>& removed,
-                                          const config::SegmentConfig& cfg);
+                                          const config::SegmentConfig& cfg, bool depth_image = false);
 
 }  // namespace cloudshape::segment

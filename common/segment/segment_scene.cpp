@@ -67,7 +67,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
     }
   }
   if (!g.viewpoint) orient_normals_outward(g, removed);
-  std::vector<std::int32_t> label = convex_segments(g, removed, cfg);
+  std::vector<std::int32_t> label = convex_segments(g, removed, cfg, grid.organized());
   join_cavities(g, label, cfg);
 
   std::int32_t segments = 0;

@@ -81,10 +81,17 @@ void expect_every_object(synth::SceneLayout layout, std::size_t count) {
 
 TEST(SegmentSyntheticScenes, ObjectsApartOnATable) { expect_every_object(synth::SceneLayout::random, 3); }
 TEST(SegmentSyntheticScenes, ObjectsInARow) { expect_every_object(synth::SceneLayout::row, 3); }
-// DISABLED (issue 10, left): boxes placed flush side by side show coplanar faces, one smooth
-// patch across both; a box stacked exactly on a box of the same depth likewise. The real
-// stacked scenes of mosd_learn come apart (cloudshape-bench --scenes); these exact ones do not.
-TEST(SegmentSyntheticScenes, DISABLED_TouchingObjects) { expect_every_object(synth::SceneLayout::touching, 2); }
+// Boxes and cans lined up touching: where a box's top meets its neighbour's front at a step
+// finer than the graph the junction looks convex, but the two faces reach their crease side by
+// side (convex_segments: crease_overlap), and slivers along the step bridge nothing.
+TEST(SegmentSyntheticScenes, TouchingObjects) { expect_every_object(synth::SceneLayout::touching, 2); }
+// DISABLED (issue 10, left): seed 1: the upper box stands turned about 10 deg from the lower one,
+// its side nearly in line with the lower box's side: the junction between those sides is within
+// convex_tolerance_degrees (flat) and one patch of faces spans both boxes; it needs a cut along
+// the lower box's top edge (CPC's planar cuts, Schoeler et al. 2015), not a junction test.
+// Seed 4: the table is not taken for structure: its plane is found (21 times the stack's
+// footprint) but only 2 of the stack's contact nodes, not structure_min_standing (10), have table
+// beyond them in all four in-plane directions (structure_planes); it comes out as a false object.
 TEST(SegmentSyntheticScenes, DISABLED_BoxOnBox) { expect_every_object(synth::SceneLayout::stacked, 2); }
 TEST(SegmentSyntheticScenes, ObjectsAgainstAWall) { expect_every_object(synth::SceneLayout::wall, 2); }
 
