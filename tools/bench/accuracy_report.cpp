@@ -11,8 +11,8 @@ namespace cloudshape::bench {
 
 namespace {
 
-// Rows in the fixed shape order, then whatever else a condition holds, then "all" (views that
-// determine their solid), then "all/undet" when some do not.
+// Rows in the fixed shape order, then whatever else a condition holds, then "all/undet" when some
+// views do not determine their solid, and last "all" (the rest; readers take the last row).
 std::vector<std::pair<std::string, Tally>> rows_of(const ConditionReport& c) {
   std::vector<std::pair<std::string, Tally>> rows;
   for (const auto kind : synth::all_shape_kinds()) {
@@ -25,9 +25,9 @@ std::vector<std::pair<std::string, Tally>> rows_of(const ConditionReport& c) {
   for (const auto& [shape, t] : c.tallies) {
     if (is_undetermined_row(shape)) rows.emplace_back(shape, t);
   }
-  rows.emplace_back("all", merge(c.tallies));
   const Tally undetermined = merge(c.tallies, true);
   if (undetermined.objects > 0) rows.emplace_back(undetermined_row("all"), undetermined);
+  rows.emplace_back("all", merge(c.tallies));
   return rows;
 }
 
