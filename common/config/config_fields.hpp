@@ -145,10 +145,12 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_side_span", c.min_side_span);
   f("extent_hull_samples", c.extent_hull_samples);
   f("apex_gap", c.apex_gap);
+  f("cone_tip_gap", c.cone_tip_gap);
   f("frustum_min_taper", c.frustum_min_taper);
   f("frustum_min_top_share", c.frustum_min_top_share);
   f("regular_tolerance", c.regular_tolerance);
   f("curved_side_flat_share", c.curved_side_flat_share);
+  f("side_face_min_share", c.side_face_min_share);
   f("flat_face_fill_cells", c.flat_face_fill_cells);
   f("flat_face_min_fill", c.flat_face_min_fill);
   f("box_face_rect_fill", c.box_face_rect_fill);

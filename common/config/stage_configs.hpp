@@ -153,12 +153,14 @@ struct SolveConfig {
   double polyhedron_face_share = 0.5;    // tetrahedron and prism fits: planes along their faces hold at least this share of the points (prism sides: of the points of planes around the axis)
   std::int64_t extent_hull_samples = 2000;  // points the extent's minimum-area rectangles are chosen from (its bounds take every point)
   double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
+  double cone_tip_gap = 0.2;             // ... and no cone either when its points stop this share short of the apex, ringing it or not (a frustum seen from one side)
   double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
   double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
   double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
   double flat_face_fill_cells = 2.0;     // cell of the fill test below, in resolutions
   double flat_face_min_fill = 0.5;       // a flat face off the caps counts only when its points cover this share of its convex hull (a scan line does not)
-  double curved_side_flat_share = 0.6;   // at most this share of a cylinder's or sphere's points off its caps on true flat faces (an octahedron: nearly all)
+  double curved_side_flat_share = 0.6;   // at most this share of a cylinder's, sphere's, cone's or frustum's points off its caps on true flat faces (an octahedron: nearly all) ...
+  double side_face_min_share = 0.1;      // ... a cone's or frustum's faces counting only when each holds this share of the points (apex strips are small)
   double box_face_rect_fill = 0.6;       // a box's larger faces fill at least this share of their smallest enclosing rectangle (a triangle: half) ...
   double box_outline_min_share = 0.15;   // ... those holding at least this share of the flat faces' points
   double stray_face_degrees = 20.0;      // a face farther than this from every face direction of a box or tetrahedron is none of its faces ...

@@ -36,18 +36,11 @@ Eigen::Matrix3d refine_frame(const Eigen::Matrix3d& frame,
   return r.allFinite() ? r : frame;
 }
 
-// Every face of a box lies along one of its three axes. Faces that lie along none (an
-// octahedron's fourth direction, a tetrahedron's slants, a triangular prism's second side)
-// say the box is only the points' bounding frame: the share of face points on them.
-double stray_face_share(const Eigen::Matrix3d& frame, const std::vector<const DetectedPlane*>& faces,
-                        double cos_along) {
-  std::size_t all = 0, stray = 0;
-  for (const DetectedPlane* f : faces) {
-    all += f->inliers.size();
-    if ((frame.transpose() * f->plane.normal).cwiseAbs().maxCoeff() < cos_along)
-      stray += f->inliers.size();
-  }
-  return all ? static_cast<double>(stray) / static_cast<double>(all) : 0.0;
+// A box's six face directions: its three axes, either sign.
+std::vector<Eigen::Vector3d> face_directions(const Eigen::Matrix3d& frame) {
+  std::vector<Eigen::Vector3d> directions;
+  for (int k = 0; k < 3; ++k) directions.insert(directions.end(), {frame.col(k), -frame.col(k)});
+  return directions;
 }
 
 // A box's faces are rectangles: a face holding a fair share of the face points whose outline
@@ -97,7 +90,10 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
   frame.col(1) = a1;
   frame.col(2) = a0.cross(a1);
   frame = refine_frame(frame, faces, cos_parallel);
-  if (stray_face_share(frame, faces, std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) > in.cfg.stray_face_share)
+  // Faces along none of the box's axes (a tetrahedron's slants, a triangular prism's second
+  // side) say the box is only the points' bounding frame.
+  if (detail::stray_face_share(faces, face_directions(frame), std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) >
+      in.cfg.stray_face_share)
     return std::nullopt;
   if (!faces_are_rectangles(in, faces)) return std::nullopt;
 

@@ -106,7 +106,9 @@ std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const Detected
 
 // A cone cut short: no point comes within solve.apex_gap of the slant height of its apex, while
 // the highest points ring the axis all round (a cut's rim; a cone seen from below shows only
-// part of its silhouette there, a complete one its tip).
+// part of its silhouette there, a complete one its tip); or none within solve.cone_tip_gap,
+// ringing it or not: a side seen at all reaches the tip, a frustum's seen from one side stops
+// at part of its smaller rim.
 bool cut_short(const SolveInput& in, const FittedSolid& cone) {
   const Eigen::Vector3d axis = cone.axes.row(0).transpose();
   const double radius = cone.dimensions[0].second, height = cone.dimensions[1].second;
@@ -116,6 +118,7 @@ bool cut_short(const SolveInput& in, const FittedSolid& cone) {
     nearest = std::min(nearest, (p - apex).norm());
     top = std::max(top, (p - cone.center).dot(axis));
   }
+  if (nearest > in.cfg.cone_tip_gap * std::hypot(radius, height)) return true;
   if (nearest <= in.cfg.apex_gap * std::hypot(radius, height)) return false;
   const Eigen::Matrix3d frame = cone.axes;
   std::array<bool, 12> sector{};

@@ -10,6 +10,8 @@
 #include <limits>
 #include <tuple>
 
+#include "geometry/convex_hull.hpp"
+#include "geometry/polygon.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -75,6 +77,23 @@ double side_span(const PointList& cloud, const DetectedPlane& face, const Eigen:
   };
   const double lo = at(0.02);
   return at(0.98) - lo;
+}
+
+// Share of its rectangle (its points' width across, by the prism's height) the convex hull of a
+// side's points covers: a prism's side is a rectangle, a tetrahedron's or pyramid's face a
+// triangle that fills half.
+double side_fill(const PointList& cloud, const DetectedPlane& face, const Eigen::Vector3d& axis,
+                 const Eigen::Vector3d& across, double height) {
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(face.inliers.size());
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::uint32_t i : face.inliers) {
+    flat.emplace_back(cloud[i].dot(axis), cloud[i].dot(across));
+    lo = std::min(lo, flat.back().y()), hi = std::max(hi, flat.back().y());
+  }
+  const double rectangle = (hi - lo) * height;
+  if (flat.size() < 3 || !(rectangle > 0.0)) return 0.0;
+  return std::abs(geometry::signed_area(geometry::convex_hull_2d(std::move(flat)))) / rectangle;
 }
 
 // Points of the planes (faces or not) whose normals are perpendicular to the axis.
@@ -176,6 +195,12 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   for (int k = 0; k < 5; ++k)
     if (seen_face[k] && side_span(in.cloud, *seen_face[k], axis.cross(normals[k])) + 2.0 * edge_band <
                             in.cfg.min_side_span * side)
+      return std::nullopt;
+  // And with no cap seen to fix the height, a rectangle the prism's height: a tetrahedron's two
+  // faces meeting at 108 deg are triangles. (Under a cap a side is the cap's edge extruded; an
+  // uneven cloud's thin patches there may cut its hull's corners.)
+  for (int k = 0; k < 5 && found->caps.empty(); ++k)
+    if (seen_face[k] && side_fill(in.cloud, *seen_face[k], axis, axis.cross(normals[k]), height) < in.cfg.prism_side_fill)
       return std::nullopt;
 
   FittedSolid out;

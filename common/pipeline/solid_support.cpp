@@ -262,5 +262,17 @@ std::optional<ConicalSide> fit_conical_side(const SolveInput& in, const Detected
   return out;
 }
 
+double stray_face_share(const std::vector<const DetectedPlane*>& faces,
+                        const std::vector<Eigen::Vector3d>& directions, double cos_along) {
+  std::size_t all = 0, stray = 0;
+  for (const DetectedPlane* f : faces) {
+    all += f->inliers.size();
+    bool along = false;
+    for (const Eigen::Vector3d& d : directions) along = along || f->plane.normal.dot(d) >= cos_along;
+    if (!along) stray += f->inliers.size();
+  }
+  return all ? static_cast<double>(stray) / static_cast<double>(all) : 0.0;
+}
+
 }  // namespace detail
 }  // namespace cloudshape::pipeline

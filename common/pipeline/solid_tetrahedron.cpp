@@ -185,21 +185,6 @@ std::optional<std::array<Point, 4>> from_largest_faces(const std::vector<const D
   return vertices;
 }
 
-// Share of the true faces' points on faces whose outward normal is none of the tetrahedron's
-// four: it has no two parallel faces, so an octahedron's opposite faces or a pyramid's fifth
-// say the four were picked from a solid with more.
-double stray_face_share(const std::vector<const DetectedPlane*>& faces,
-                        const std::vector<Eigen::Vector3d>& normals, double cos_along) {
-  std::size_t all = 0, stray = 0;
-  for (const DetectedPlane* f : faces) {
-    all += f->inliers.size();
-    bool along = false;
-    for (const Eigen::Vector3d& n : normals) along = along || f->plane.normal.dot(n) >= cos_along;
-    if (!along) stray += f->inliers.size();
-  }
-  return all ? static_cast<double>(stray) / static_cast<double>(all) : 0.0;
-}
-
 }  // namespace
 
 std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
@@ -218,7 +203,9 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
     return std::nullopt;
   const double cos_along = std::cos(in.cfg.stray_face_degrees * 3.14159265358979323846 / 180.0);
-  if (stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share) return std::nullopt;
+  // A tetrahedron has no two parallel faces: an octahedron's opposite faces or a pyramid's fifth
+  // (along none of its four outward normals) say the four were picked from a solid with more.
+  if (detail::stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share) return std::nullopt;
   return make_tetrahedron(*vertices, in.cfg.regular_tolerance);
 }
 

@@ -138,6 +138,13 @@ std::pair<double, double> extrusion_extent(const SolveInput& in,
 std::size_t points_on_planes_along(const PlaneSegmentation& planes,
                                    const std::vector<Eigen::Vector3d>& normals, double degrees);
 
+// Share of the faces' points on faces whose normal lies within acos(cos_along) of none of
+// `directions`: a polyhedron's every face is along one of its face directions, so faces along
+// none (an octahedron's fourth direction, a pyramid's fifth face, a prism's slanted side under a
+// box) say it is only a frame the points were fitted into.
+double stray_face_share(const std::vector<const DetectedPlane*>& faces,
+                        const std::vector<Eigen::Vector3d>& directions, double cos_along);
+
 // Points that lie on none of the given faces, nor within `band` of their planes: noisy
 // points of a face that fell outside its fine RANSAC band are still the face's.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,

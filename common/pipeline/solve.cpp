@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <limits>
 #include <unordered_set>
 
 #include "geometry/convex_hull.hpp"
@@ -94,27 +95,36 @@ double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell)
 
 // Share of the points off the solid's caps (true faces with their normal along its axis; a
 // sphere has none) that lie on true flat faces their points fill (hull_fill of at least
-// `min_fill`): a cylinder's side is curved, so a cloud that is flat faces all round (an
-// octahedron, whose corners ring some axis) is none. Zero where the
-// caps hold most of the points, and for a cone or frustum: its side narrows to a point, so the
-// strips RANSAC cuts along it near the apex are flat within the noise and pass for faces.
+// `min_fill`; `fills` holds each plane's, NaN until first needed: the same for every candidate
+// solid, so computed once per object): a curved side is no face, so a cloud that is flat faces
+// all round (an octahedron, whose corners ring some axis; a tetrahedron seen about a corner) is
+// none. Only faces holding `large_share` of the points count for a cone or frustum: its side
+// narrows towards the apex, where the strips RANSAC cuts along it are flat within the noise, but
+// small. Zero where the caps hold most of the points: the side is too little to judge by, and
+// the caps' rim passes for flat strips.
 double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, const PointList& cloud,
-                       double cos_parallel, double cell, double min_fill) {
+                       double cos_parallel, double cell, double min_fill, double large_share,
+                       std::vector<double>& fills) {
   const std::size_t points = cloud.size();
-  const bool revolution = s.shape == Shape::cylinder;
+  const bool tapered = s.shape == Shape::cone || s.shape == Shape::frustum;
+  const bool revolution = s.shape == Shape::cylinder || tapered;
   if (!revolution && s.shape != Shape::sphere) return 0.0;
   const Eigen::Vector3d axis = s.axes.row(0).transpose();
-  std::size_t flat = 0, caps = 0;
-  for (const DetectedPlane& p : planes.planes) {
+  std::size_t flat = 0, large = 0, caps = 0;
+  for (std::size_t k = 0; k < planes.planes.size(); ++k) {
+    const DetectedPlane& p = planes.planes[k];
     if (!p.is_face) continue;
-    const bool cap = revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel;
-    if (!cap && hull_fill(cloud, p, cell) < min_fill) continue;
-    (cap ? caps : flat) += p.inliers.size();
+    if (revolution && std::abs(p.plane.normal.dot(axis)) >= cos_parallel) {
+      caps += p.inliers.size();
+      continue;
+    }
+    if (std::isnan(fills[k])) fills[k] = hull_fill(cloud, p, cell);
+    if (fills[k] < min_fill) continue;
+    flat += p.inliers.size();
+    if (static_cast<double>(p.inliers.size()) >= large_share * static_cast<double>(points)) large += p.inliers.size();
   }
-  // Where the caps hold most of the points (a cone seen from its base) the side is too little
-  // to judge by: the base's rim passes for flat strips.
   if (2 * (points - std::min(points, caps)) < points) return 0.0;
-  return static_cast<double>(flat) / static_cast<double>(points - caps);
+  return static_cast<double>(tapered ? large : flat) / static_cast<double>(points - caps);
 }
 
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
@@ -146,10 +156,11 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   std::vector<std::pair<FittedSolid, Verification>> fitted;
   double best = 0.0;
   const double cos_parallel = std::cos(cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
+  std::vector<double> fills(planes.planes.size(), std::numeric_limits<double>::quiet_NaN());
   const auto admissible = [&](const std::optional<FittedSolid>& solid) {
     return solid && plausible(*solid, diameter, cfg.max_size_ratio) &&
            flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
-                           cfg.flat_face_min_fill) <= cfg.curved_side_flat_share;
+                           cfg.flat_face_min_fill, cfg.side_face_min_share, fills) <= cfg.curved_side_flat_share;
   };
   for (Shape shape : classification.candidates) {
     auto solid = fit_solid(shape, input);

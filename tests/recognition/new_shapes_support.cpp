@@ -6,12 +6,27 @@
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
+#include "synth/mesh_visibility.hpp"
+#include "synth/visibility.hpp"
 
 namespace cloudshape::newshapes {
 
 PointList sample(const synth::SolidMesh& mesh, std::size_t points, double noise, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   PointList cloud = synth::sample_mesh_surface(mesh.vertices, mesh.triangles, points, rng);
+  std::normal_distribution<double> n(0.0, noise * mesh.size);
+  if (noise > 0.0)
+    for (Point& p : cloud) p += Eigen::Vector3d(n(rng), n(rng), n(rng));
+  return cloud;
+}
+
+PointList sample_view(const synth::SolidMesh& mesh, std::size_t points, double noise, const Eigen::Vector3d& camera,
+                      std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  const synth::MeshVisibility visibility(mesh.vertices, mesh.triangles);
+  PointList cloud = synth::sample_visible(
+      [&](std::size_t m) { return synth::sample_mesh_surface(mesh.vertices, mesh.triangles, m, rng); },
+      [&](const PointList& c) { return visibility.visible(c, camera); }, points, rng);
   std::normal_distribution<double> n(0.0, noise * mesh.size);
   if (noise > 0.0)
     for (Point& p : cloud) p += Eigen::Vector3d(n(rng), n(rng), n(rng));

@@ -12,6 +12,11 @@ namespace cloudshape::newshapes {
 // `points` area-uniform points of the mesh, Gaussian noise sigma `noise` x its size.
 PointList sample(const synth::SolidMesh& mesh, std::size_t points, double noise, std::uint64_t seed);
 
+// What a camera at `camera` sees of the mesh: `points` visible points (exact ray casting), the
+// same noise.
+PointList sample_view(const synth::SolidMesh& mesh, std::size_t points, double noise, const Eigen::Vector3d& camera,
+                      std::uint64_t seed);
+
 // recognize_cloud with config/pipeline.yaml; the cloud must give exactly one object.
 pipeline::ObjectResult recognise_one(const PointList& cloud);
 

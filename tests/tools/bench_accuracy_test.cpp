@@ -77,11 +77,11 @@ const std::vector<Gate>& gates() {
       // noise 0.5%): 96.7 (frustum 30, tetrahedron 30, prism 27: box 1, a prism of 5 sides 1,
       // unknown 1); 0.16%, 1.29%; 0.07%; 0.06; 0, 0 (fast form, prism-2)
       {"new_shapes", 90, 93.5, 0.0030, 0.0350, 0.0015, 0.25, 1, 1},
-      // new_shapes_view (the same kinds, one camera in any direction): 25.6 (tetrahedron 4,
-      // frustum 15, prism 4; box 10, unknown 33); 0.69%, 3.84%; 0.76%; 0.16; 1, 0 (shapes-3;
-      // prism-2: 27.8 with box 24, two of its tetrahedra 32-36% off in edge). Issue 11 asks
-      // 90: far from met, this floor only guards what is reached.
-      {"new_shapes_view", 90, 21.5, 0.0150, 0.1000, 0.0160, 0.35, 2, 1},
+      // new_shapes_view (the same kinds, one camera in any direction; "all" holds the 81 views
+      // that determine their solid, the other 9 are all/undet): 34.6 (tetrahedron 4, frustum
+      // 20, prism 4; box 8, unknown 30); 0.64%, 3.41%; 0.62%; 0.12; 1, 0 (views-4; main
+      // 271e9c1: 23/81). Issue 11 asks 90: far from met, this floor only guards what is reached.
+      {"new_shapes_view", 90, 31.5, 0.0150, 0.1000, 0.0160, 0.35, 2, 1},
   };
   return all;
 }
@@ -136,9 +136,13 @@ TEST_P(AccuracyGate, ConditionMeetsItsFloor) {
       for (const char* six : {"box", "tetrahedron", "pentagonal_prism", "cone", "cylinder", "sphere"})
         EXPECT_NE(shape, six) << count << " negatives reported as " << shape;
   }
-  // Every single-object synthetic cloud holds one solid.
+  // Every single-object synthetic cloud holds one solid: in "all", or (a view that does not
+  // determine its solid) in "all/undet".
   if (g.condition != "multi" && g.condition != "real") {
-    EXPECT_EQ(all.at("objects").get<std::size_t>(), g.clouds);
+    std::size_t objects = all.at("objects").get<std::size_t>();
+    for (const Json& row : c.at("rows"))
+      if (row.at("shape") == "all/undet") objects += row.at("objects").get<std::size_t>();
+    EXPECT_EQ(objects, g.clouds);
   }
 }
 

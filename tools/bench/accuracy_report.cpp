@@ -11,7 +11,8 @@ namespace cloudshape::bench {
 
 namespace {
 
-// Rows in the fixed shape order, then whatever else a condition holds, then "all".
+// Rows in the fixed shape order, then whatever else a condition holds, then "all/undet" when some
+// views do not determine their solid, and last "all" (the rest; readers take the last row).
 std::vector<std::pair<std::string, Tally>> rows_of(const ConditionReport& c) {
   std::vector<std::pair<std::string, Tally>> rows;
   for (const auto kind : synth::all_shape_kinds()) {
@@ -19,8 +20,13 @@ std::vector<std::pair<std::string, Tally>> rows_of(const ConditionReport& c) {
     if (it != c.tallies.end()) rows.emplace_back(it->first, it->second);
   }
   for (const auto& [shape, t] : c.tallies) {
-    if (!synth::shape_kind_from_string(shape)) rows.emplace_back(shape, t);
+    if (!synth::shape_kind_from_string(shape) && !is_undetermined_row(shape)) rows.emplace_back(shape, t);
   }
+  for (const auto& [shape, t] : c.tallies) {
+    if (is_undetermined_row(shape)) rows.emplace_back(shape, t);
+  }
+  const Tally undetermined = merge(c.tallies, true);
+  if (undetermined.objects > 0) rows.emplace_back(undetermined_row("all"), undetermined);
   rows.emplace_back("all", merge(c.tallies));
   return rows;
 }
@@ -122,6 +128,15 @@ void print_accuracy_table(const std::vector<ConditionReport>& reports, std::FILE
                  fmt(all.centre_errors, 0.5, 100, "%").c_str(),
                  fmt(all.axis_errors_deg, 0.5, 1, " deg").c_str(), all.false_objects, all.missed,
                  pct(all.partial, all.shaped), c.clouds, c.seconds);
+    const Tally undetermined = merge(c.tallies, true);
+    if (undetermined.objects == 0) continue;
+    const auto unknown = undetermined.wrong_as.find("unknown");
+    const int honest = unknown == undetermined.wrong_as.end() ? 0 : unknown->second;
+    std::fprintf(out,
+                 "%s, views that do not determine their solid (scored apart): %d, right shape %d, "
+                 "unknown %d, another shape named %d\n",
+                 c.name.c_str(), undetermined.objects, undetermined.right, honest,
+                 undetermined.objects - undetermined.right - honest);
   }
 }
 

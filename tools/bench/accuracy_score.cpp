@@ -79,7 +79,7 @@ void score_cloud(const TestCloud& cloud, const pipeline::RecognitionResult& r,
   std::vector<bool> used(r.objects.size(), false);
   for (std::size_t t = 0; t < cloud.truths.size(); ++t) {
     const Truth& truth = cloud.truths[t];
-    Tally& tally = tallies[truth.shape];
+    Tally& tally = tallies[truth.row.empty() ? truth.shape : truth.row];
     ++tally.objects;
     if (result_of[t] < 0) {
       ++tally.missed;
@@ -115,16 +115,29 @@ void score_cloud(const TestCloud& cloud, const pipeline::RecognitionResult& r,
       const double d = (r.objects[o].center - cloud.truths[t].center).norm();
       if (d < best) best = d, nearest = t;
     }
-    ++tallies[cloud.truths[nearest].shape].false_objects;
+    const Truth& truth = cloud.truths[nearest];
+    ++tallies[truth.row.empty() ? truth.shape : truth.row].false_objects;
   }
 }
 
-Tally merge(const std::map<std::string, Tally>& tallies) {
+namespace {
+constexpr const char* kUndetermined = "/undet";
+}  // namespace
+
+std::string undetermined_row(const std::string& shape) { return shape + kUndetermined; }
+
+bool is_undetermined_row(const std::string& row) {
+  const std::string suffix = kUndetermined;
+  return row.size() >= suffix.size() && row.compare(row.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+Tally merge(const std::map<std::string, Tally>& tallies, bool undetermined) {
   Tally all;
   const auto append = [](std::vector<double>& to, const std::vector<double>& from) {
     to.insert(to.end(), from.begin(), from.end());
   };
-  for (const auto& [shape, t] : tallies) {
+  for (const auto& [row, t] : tallies) {
+    if (is_undetermined_row(row) != undetermined) continue;
     all.objects += t.objects;
     all.right += t.right;
     all.matched += t.matched;

@@ -33,7 +33,15 @@ struct Truth {
   // prism only: the cross-section (any frame). Right needs the result's `sides` equal to its
   // corners; the dimension errors are the height's, the square root of the area's, the perimeter's.
   std::vector<Eigen::Vector2d> polygon;
+  // The table row this truth is tallied in when not its shape's: a single view that does not
+  // determine its solid (undetermined_row), scored apart from the views that do.
+  std::string row;
 };
+
+// The row of a shape's views that do not determine it ("prism/undet"), and whether a row is
+// one: such rows stay out of "all" and get an "all/undet" of their own.
+std::string undetermined_row(const std::string& shape);
+bool is_undetermined_row(const std::string& row);
 
 struct TestCloud {
   std::string source;
@@ -68,8 +76,9 @@ std::vector<int> match_results(const TestCloud& cloud, const pipeline::Recogniti
 void score_cloud(const TestCloud& cloud, const pipeline::RecognitionResult& r,
                  std::map<std::string, Tally>& tallies);
 
-// The union of several tallies (the "all" row).
-Tally merge(const std::map<std::string, Tally>& tallies);
+// The union of several tallies: the "all" row of the rows that are not undetermined ones, or
+// (undetermined = true) of those that are.
+Tally merge(const std::map<std::string, Tally>& tallies, bool undetermined = false);
 
 // Relative error of each truth dimension the result also reports, by name (a prism: height,
 // sqrt(area) and perimeter of its polygon).
