@@ -10,26 +10,15 @@
 namespace cloudshape::newshapes {
 namespace {
 
-struct Case {
-  double radius, top_radius, height;
-};
-
-double dim(const pipeline::ObjectResult& o, const std::string& name) {
-  for (const auto& [n, v] : o.dimensions)
-    if (n == name) return v;
-  ADD_FAILURE() << "no dimension " << name;
-  return 0.0;
-}
-
-void check(const Case& c, double noise, std::uint64_t seed, double tolerance) {
+void check(const FrustumCase& c, double noise, std::uint64_t seed, double tolerance) {
   std::mt19937_64 rng(seed);
   const synth::Pose pose = synth::random_pose(rng, 100.0);
   const synth::SolidMesh mesh = synth::frustum_mesh(c.radius, c.top_radius, c.height, pose);
   const pipeline::ObjectResult o = recognise_one(sample(mesh, 20000, noise, seed + 1));
   ASSERT_EQ(o.shape, "frustum") << "seed " << seed << " " << o.reason;
-  EXPECT_NEAR(dim(o, "radius"), c.radius, tolerance * c.radius) << seed;
-  EXPECT_NEAR(dim(o, "top_radius"), c.top_radius, tolerance * c.radius) << seed;
-  EXPECT_NEAR(dim(o, "height"), c.height, tolerance * c.height) << seed;
+  EXPECT_NEAR(dimension(o, "radius"), c.radius, tolerance * c.radius) << seed;
+  EXPECT_NEAR(dimension(o, "top_radius"), c.top_radius, tolerance * c.radius) << seed;
+  EXPECT_NEAR(dimension(o, "height"), c.height, tolerance * c.height) << seed;
   EXPECT_LT((o.center - pose.center).norm(), tolerance * mesh.size) << seed;
   EXPECT_GT(o.axes.row(0).dot(pose.axes.row(0)), std::cos(2.0 * 3.14159265358979 / 180.0)) << seed;
   EXPECT_FALSE(o.partial);
@@ -37,16 +26,16 @@ void check(const Case& c, double noise, std::uint64_t seed, double tolerance) {
 
 // A bucket, a lamp shade, a squat cup, a nearly-cylindrical tumbler (taper 25%: a taper under
 // solve.frustum_min_taper, 20%, is named cylinder, as one noisy view of a can can show that much).
-const std::vector<Case> kCases = {{40, 28, 60}, {50, 20, 40}, {45, 35, 25}, {32, 24, 90}};
+const std::vector<FrustumCase> kCases = {{40, 28, 60}, {50, 20, 40}, {45, 35, 25}, {32, 24, 90}};
 
 TEST(FrustumParameters, Whole) {
   std::uint64_t seed = 100;
-  for (const Case& c : kCases) check(c, 0.0, seed += 10, 0.01);
+  for (const FrustumCase& c : kCases) check(c, 0.0, seed += 10, 0.01);
 }
 
 TEST(FrustumParameters, Noisy) {
   std::uint64_t seed = 200;
-  for (const Case& c : kCases) check(c, 0.005, seed += 10, 0.02);
+  for (const FrustumCase& c : kCases) check(c, 0.005, seed += 10, 0.02);
 }
 
 }  // namespace

@@ -13,17 +13,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-struct Case {
-  double radius, top_radius, height;
-};
-
-double dim(const pipeline::ObjectResult& o, const std::string& name) {
-  for (const auto& [n, v] : o.dimensions)
-    if (n == name) return v;
-  ADD_FAILURE() << "no dimension " << name;
-  return 0.0;
-}
-
 // The camera 3 sizes away, `elevation` degrees from the frustum's side towards its larger end
 // (negative: towards the smaller end), at a random azimuth around its axis.
 Eigen::Vector3d camera(const synth::SolidMesh& mesh, const synth::Pose& pose, double elevation, std::mt19937_64& rng) {
@@ -35,11 +24,11 @@ Eigen::Vector3d camera(const synth::SolidMesh& mesh, const synth::Pose& pose, do
 }
 
 // A bucket, a lamp shade, a squat cup, a tumbler: every one seen from four seeds.
-const std::vector<Case> kCases = {{40, 22, 60}, {50, 20, 40}, {45, 30, 25}, {32, 18, 90}};
+const std::vector<FrustumCase> kCases = {{40, 22, 60}, {50, 20, 40}, {45, 30, 25}, {32, 18, 90}};
 
 void check_views(double elevation, std::uint64_t seed) {
   int named = 0, views = 0;
-  for (const Case& c : kCases) {
+  for (const FrustumCase& c : kCases) {
     for (int k = 0; k < 4; ++k, ++views) {
       std::mt19937_64 rng(seed += 7);
       const synth::Pose pose = synth::random_pose(rng, 100.0);
@@ -49,10 +38,10 @@ void check_views(double elevation, std::uint64_t seed) {
       ASSERT_TRUE(o.shape == "frustum" || o.shape == "unknown") << "seed " << seed << ": " << o.shape;
       if (o.shape != "frustum") continue;
       ++named;
-      EXPECT_NEAR(dim(o, "radius"), c.radius, 0.04 * c.radius) << seed;
-      EXPECT_NEAR(dim(o, "top_radius"), c.top_radius, 0.04 * c.radius) << seed;
+      EXPECT_NEAR(dimension(o, "radius"), c.radius, 0.04 * c.radius) << seed;
+      EXPECT_NEAR(dimension(o, "top_radius"), c.top_radius, 0.04 * c.radius) << seed;
       // The height ends at the rims, seen through noise of 0.5% of the size: 2% of the size.
-      EXPECT_NEAR(dim(o, "height"), c.height, 0.02 * mesh.size) << seed;
+      EXPECT_NEAR(dimension(o, "height"), c.height, 0.02 * mesh.size) << seed;
       EXPECT_GT(o.axes.row(0).dot(pose.axes.row(0)), std::cos(3.0 * kPi / 180.0)) << seed;
     }
   }

@@ -40,4 +40,11 @@ pipeline::ObjectResult recognise_one(const PointList& cloud) {
   return r.objects.empty() ? pipeline::ObjectResult{} : r.objects.front();
 }
 
+double dimension(const pipeline::ObjectResult& o, const std::string& name) {
+  for (const auto& [n, v] : o.dimensions)
+    if (n == name) return v;
+  ADD_FAILURE() << "no dimension " << name;
+  return 0.0;
+}
+
 }  // namespace cloudshape::newshapes

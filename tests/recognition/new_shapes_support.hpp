@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 
 #include "pipeline/result.hpp"
 #include "synth/mesh_solids.hpp"
@@ -19,5 +20,13 @@ PointList sample_view(const synth::SolidMesh& mesh, std::size_t points, double n
 
 // recognize_cloud with config/pipeline.yaml; the cloud must give exactly one object.
 pipeline::ObjectResult recognise_one(const PointList& cloud);
+
+// A frustum's proportions: the larger end's radius, the smaller end's, the height.
+struct FrustumCase {
+  double radius, top_radius, height;
+};
+
+// The object's dimension `name`; a test failure (and 0) when it has none.
+double dimension(const pipeline::ObjectResult& o, const std::string& name);
 
 }  // namespace cloudshape::newshapes
