@@ -67,6 +67,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_max_share", c.fragment_max_share);
   f("min_object_nodes", c.min_object_nodes);
+  f("scan_object_min_beams", c.scan_object_min_beams);
+  f("scan_leftover_share", c.scan_leftover_share);
   f("min_object_share", c.min_object_share);
   f("seed", c.seed);
 }

@@ -5,11 +5,13 @@
 #include <optional>
 
 #include "geometry/pca.hpp"
+#include "geometry/voxel_grid.hpp"
 #include "segment/cavity_join.hpp"
 #include "segment/convex_segments.hpp"
 #include "segment/neighbour_graph.hpp"
 #include "segment/own_resolution.hpp"
 #include "segment/remainder_graph.hpp"
+#include "segment/scan_beams.hpp"
 #include "segment/scan_origin.hpp"
 
 namespace cloudshape::segment {
@@ -34,6 +36,25 @@ bool leftover_of_structure(const NeighbourGraph& g, const std::vector<std::uint3
     }
   }
   return false;
+}
+
+// The share of an object's points within cfg.structure_band of its own point spacings of one
+// structure plane (the most): a lidar frame's strip of ground ring or wall the plane's band missed
+// holds most of its points there; a solid standing on the plane has its own surface above it.
+double in_structure_share(const PointList& points, const std::vector<std::uint32_t>& object,
+                          const std::vector<StructurePlane>& structure, const config::SegmentConfig& cfg) {
+  if (structure.empty() || object.empty()) return 0.0;
+  PointList own;
+  own.reserve(object.size());
+  for (std::uint32_t i : object) own.push_back(points[i]);
+  const double band = cfg.structure_band * geometry::mean_nearest_neighbour_distance(own);
+  std::size_t most = 0;
+  for (const StructurePlane& s : structure) {
+    std::size_t within = 0;
+    for (const Point& p : own) within += std::abs(s.plane.signed_distance(p)) <= band ? 1 : 0;
+    most = std::max(most, within);
+  }
+  return static_cast<double>(most) / static_cast<double>(own.size());
 }
 
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
@@ -132,7 +153,20 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
-  return segment_part(points, grid, cfg, pool, std::nullopt);
+  SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt);
+  // A lidar frame's object on fewer beams than a curve needs is a strip of its ground or walls:
+  // its vertical profile (what tells a sphere from a cylinder or a box) was never sampled.
+  if (!grid.organized() && out.viewpoint && !out.objects.empty()) {
+    const std::vector<std::int32_t> beam_of = scan_beam_of_points(points, cfg);
+    const auto min_beams = static_cast<std::size_t>(cfg.scan_object_min_beams);
+    out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(),
+                                     [&](const auto& o) {
+                                       return beams_spanned(beam_of, o) < min_beams ||
+                                              in_structure_share(points, o, out.structure, cfg) >= cfg.scan_leftover_share;
+                                     }),
+                      out.objects.end());
+  }
+  return out;
 }
 
 }  // namespace cloudshape::segment
