@@ -208,7 +208,7 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
 // The frame's other segments are strips of ground rings and walls the structure left, or sparse
 // clutter: those on fewer beams than a solid needs (segment.scan_object_min_beams) or mostly within
 // a structure plane's band (segment.scan_leftover_share) are dropped, so few named solids remain
-// beside the sphere (measured: 11, 15 before; bound 13: a margin of 2 for other RANSAC draws).
+// beside the sphere (measured: 12, 15 before; bound 14: a margin of 2 for other RANSAC draws).
 TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
   const std::filesystem::path path =
       std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";
@@ -226,7 +226,7 @@ TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
     }
   }
   EXPECT_EQ(spheres_there, 1u);
-  EXPECT_LE(named_elsewhere, 13u);
+  EXPECT_LE(named_elsewhere, 14u);
 }
 
 }  // namespace
