@@ -9,6 +9,7 @@
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
+#include "lidar_frames.hpp"
 #include "synth/scene_capture.hpp"
 
 namespace cloudshape {
@@ -23,13 +24,7 @@ TEST(LidarScene, CalibrationSphereOnTheGroundAmongWalls) {
   int seen = 0, found = 0;
   std::string misses;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
-    synth::SceneRecipe recipe;
-    recipe.layout = synth::SceneLayout::lidar;
-    recipe.count = 1;
-    recipe.seed = seed;
-    synth::CaptureOptions options;
-    options.range_noise = 0.01;
-    const synth::SceneCapture capture = synth::capture_scene(recipe, options);
+    const synth::SceneCapture capture = testing::lidar_capture(seed);
     const synth::SolidSpec& sphere = capture.scene.objects.front().solid;
     const double radius = synth::dimension(sphere, "radius");
     const Eigen::Vector3d centre = sphere.pose.center;

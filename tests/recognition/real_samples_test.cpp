@@ -178,6 +178,16 @@ TEST(RealScan, TableTopScenesGiveTheObjectsOnTheTable) {
   EXPECT_LE(cylinders.objects.size(), 7u);
 }
 
+// The SphereCalib lidar frame (SOURCES.md), recognised with the shipped configuration.
+std::filesystem::path spherecalib_path() {
+  return std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";
+}
+pipeline::RecognitionResult recognise_spherecalib() {
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  return pipeline::recognize_cloud(io::read_cloud(spherecalib_path().string()).points, cfg, "spherecalib");
+}
+const Eigen::Vector3d kSphereCalibCentre(1.723, 2.471, 0.009);
+
 // The SphereCalib lidar scan (SOURCES.md): a 0.293 m sphere, centre (1.723, 2.471, 0.009) m,
 // 275 points on ~11 scan rings, in a 38 x 28 x 7.5 m scene of ground and walls: the sphere is
 // one of the objects, recognised from its own points at its own resolution (the frame's sensor
@@ -185,12 +195,9 @@ TEST(RealScan, TableTopScenesGiveTheObjectsOnTheTable) {
 // Tolerance (the scene issue's acceptance): radius within 5%, centre within 5 cm, and no other
 // object but unknown within two radii of the centre.
 TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
-  const std::filesystem::path path =
-      std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";
-  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
-  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  const auto result = pipeline::recognize_cloud(io::read_cloud(path.string()).points, cfg, "spherecalib");
-  const Eigen::Vector3d centre(1.723, 2.471, 0.009);
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(spherecalib_path());
+  const auto result = recognise_spherecalib();
+  const Eigen::Vector3d centre = kSphereCalibCentre;
   const auto nearest = std::min_element(result.objects.begin(), result.objects.end(), [&](const auto& a, const auto& b) {
     return (a.center - centre).norm() < (b.center - centre).norm();
   });
@@ -210,12 +217,9 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
 // a structure plane's band (segment.scan_leftover_share) are dropped, so few named solids remain
 // beside the sphere (measured: 12, 15 before; bound 14: a margin of 2 for other RANSAC draws).
 TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
-  const std::filesystem::path path =
-      std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/spherecalib/example3_L1_S1_lidar_sphere.xyz";
-  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
-  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  const auto result = pipeline::recognize_cloud(io::read_cloud(path.string()).points, cfg, "spherecalib");
-  const Eigen::Vector3d centre(1.723, 2.471, 0.009);
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(spherecalib_path());
+  const auto result = recognise_spherecalib();
+  const Eigen::Vector3d centre = kSphereCalibCentre;
   std::size_t spheres_there = 0, named_elsewhere = 0;
   for (const auto& o : result.objects) {
     if (o.shape == "unknown") continue;

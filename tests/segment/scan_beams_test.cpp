@@ -8,6 +8,7 @@
 #include "config/pipeline_config.hpp"
 #include "segment/scan_beams.hpp"
 #include "segment/segment_scene.hpp"
+#include "lidar_frames.hpp"
 #include "synth/scene_capture.hpp"
 
 namespace cloudshape::segment {
@@ -15,20 +16,7 @@ namespace {
 
 const config::SegmentConfig kCfg = config::PipelineConfig{}.segment;
 
-PointList lidar_frame(std::uint64_t seed, int rings) {
-  synth::SceneRecipe recipe;
-  recipe.layout = synth::SceneLayout::lidar;
-  recipe.count = 1;
-  recipe.seed = seed;
-  synth::CaptureOptions options;
-  options.range_noise = 0.01;
-  options.rings = rings;
-  PointList points;
-  for (const Point& p : synth::capture_scene(recipe, options).image.points) {
-    if (p.allFinite()) points.push_back(p);
-  }
-  return points;
-}
+using testing::lidar_frame;
 
 TEST(SegmentScanBeams, AGroundRingArcLiesOnOneBeamTheFrameOnMany) {
   const PointList frame = lidar_frame(1, 16);

@@ -6,26 +6,14 @@
 #include "config/pipeline_config.hpp"
 #include "segment/scan_origin.hpp"
 #include "synth/ground_truth.hpp"
+#include "lidar_frames.hpp"
 #include "synth/scene_capture.hpp"
 #include "synth/synthetic_cloud.hpp"
 
 namespace cloudshape::segment {
 namespace {
 
-PointList lidar_frame(std::uint64_t seed, int rings) {
-  synth::SceneRecipe recipe;
-  recipe.layout = synth::SceneLayout::lidar;
-  recipe.count = 1;
-  recipe.seed = seed;
-  synth::CaptureOptions options;
-  options.range_noise = 0.01;
-  options.rings = rings;
-  PointList points;
-  for (const Point& p : synth::capture_scene(recipe, options).image.points) {
-    if (p.allFinite()) points.push_back(p);
-  }
-  return points;
-}
+using testing::lidar_frame;
 
 const config::SegmentConfig kCfg = config::PipelineConfig{}.segment;
 

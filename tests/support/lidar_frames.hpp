@@ -1,0 +1,32 @@
+// Synthetic lidar frames as the tests use them: cloudshape-synth's lidar layout, one object,
+// 1 cm range noise; the capture with its truth, or only its finite returns.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "synth/scene_capture.hpp"
+
+namespace cloudshape::testing {
+
+inline synth::SceneCapture lidar_capture(std::uint64_t seed, std::size_t rings = synth::CaptureOptions{}.rings) {
+  synth::SceneRecipe recipe;
+  recipe.layout = synth::SceneLayout::lidar;
+  recipe.count = 1;
+  recipe.seed = seed;
+  synth::CaptureOptions options;
+  options.range_noise = 0.01;
+  options.rings = rings;
+  return synth::capture_scene(recipe, options);
+}
+
+// The returns of lidar_capture(seed, rings), unorganized (no-return pixels left out).
+inline PointList lidar_frame(std::uint64_t seed, std::size_t rings) {
+  PointList points;
+  for (const Point& p : lidar_capture(seed, rings).image.points) {
+    if (p.allFinite()) points.push_back(p);
+  }
+  return points;
+}
+
+}  // namespace cloudshape::testing
