@@ -1,44 +1,49 @@
 #include "segment/scan_beams.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
 namespace cloudshape::segment {
 
-std::vector<std::int32_t> scan_beam_of_points(const PointList& points, const config::SegmentConfig& cfg) {
+std::optional<std::int64_t> elevation_bin(const Point& p, double bin_degrees) {
   constexpr double kDegrees = 180.0 / 3.14159265358979323846;
-  // As scan_origin: a beam holds a ring's worth of returns, fewer in a run are strays.
-  constexpr std::size_t kMinPerBeam = 10;
-  constexpr std::int64_t kNoBin = INT64_MIN;
+  const double horizontal = std::hypot(p.x(), p.y());
+  if (!p.allFinite() || (horizontal == 0.0 && p.z() == 0.0)) return std::nullopt;
+  return static_cast<std::int64_t>(std::floor(std::atan2(p.z(), horizontal) * kDegrees / bin_degrees));
+}
+
+std::vector<ElevationBeam> elevation_beams(const std::vector<std::pair<std::int64_t, std::size_t>>& sorted_counts) {
+  std::vector<ElevationBeam> beams;
+  for (std::size_t k = 0; k < sorted_counts.size();) {
+    std::size_t end = k + 1, run = sorted_counts[k].second;
+    while (end < sorted_counts.size() && sorted_counts[end].first == sorted_counts[end - 1].first + 1) {
+      run += sorted_counts[end++].second;
+    }
+    if (run >= kMinPointsPerBeam) beams.push_back({sorted_counts[k].first, sorted_counts[end - 1].first, run});
+    k = end;
+  }
+  return beams;
+}
+
+std::vector<std::int32_t> scan_beam_of_points(const PointList& points, const config::SegmentConfig& cfg) {
   std::vector<std::int32_t> beam_of(points.size(), -1);
   const double bin = cfg.scan_elevation_bin_degrees;
   if (!(bin > 0.0)) return beam_of;
-  std::vector<std::int64_t> bin_of(points.size(), kNoBin);
+  std::vector<std::optional<std::int64_t>> bin_of(points.size());
   std::map<std::int64_t, std::size_t> counts;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Point& p = points[i];
-    const double horizontal = std::hypot(p.x(), p.y());
-    if (!p.allFinite() || (horizontal == 0.0 && p.z() == 0.0)) continue;
-    bin_of[i] = static_cast<std::int64_t>(std::floor(std::atan2(p.z(), horizontal) * kDegrees / bin));
-    ++counts[bin_of[i]];
+    bin_of[i] = elevation_bin(points[i], bin);
+    if (bin_of[i]) ++counts[*bin_of[i]];
   }
-  std::map<std::int64_t, std::int32_t> beam_of_bin;
-  std::int32_t beams = 0;
-  for (auto it = counts.begin(); it != counts.end();) {
-    auto end = std::next(it);
-    std::size_t run = it->second;
-    while (end != counts.end() && end->first == std::prev(end)->first + 1) run += (end++)->second;
-    if (run >= kMinPerBeam) {
-      for (auto b = it; b != end; ++b) beam_of_bin[b->first] = beams;
-      ++beams;
-    }
-    it = end;
-  }
+  const std::vector<ElevationBeam> beams =
+      elevation_beams(std::vector<std::pair<std::int64_t, std::size_t>>(counts.begin(), counts.end()));
   for (std::size_t i = 0; i < points.size(); ++i) {
-    if (bin_of[i] == kNoBin) continue;
-    const auto found = beam_of_bin.find(bin_of[i]);
-    if (found != beam_of_bin.end()) beam_of[i] = found->second;
+    if (!bin_of[i]) continue;
+    const auto beam = std::lower_bound(beams.begin(), beams.end(), *bin_of[i],
+                                       [](const ElevationBeam& b, std::int64_t v) { return b.last_bin < v; });
+    if (beam != beams.end() && beam->first_bin <= *bin_of[i]) beam_of[i] = static_cast<std::int32_t>(beam - beams.begin());
   }
   return beam_of;
 }

@@ -4,12 +4,32 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
 
 namespace cloudshape::segment {
+
+// A beam holds a ring's worth of returns; fewer in a run of bins are strays (a sparse cloud leaves
+// bins occupied by chance alone).
+inline constexpr std::size_t kMinPointsPerBeam = 10;
+
+// The elevation bin (of `bin_degrees`) of `p` seen from the origin; none for the origin itself or
+// a non-finite point.
+std::optional<std::int64_t> elevation_bin(const Point& p, double bin_degrees);
+
+// A beam: a run of adjacent occupied elevation bins, empty ones either side, holding at least
+// kMinPointsPerBeam points.
+struct ElevationBeam {
+  std::int64_t first_bin = 0, last_bin = 0;
+  std::size_t points = 0;
+};
+
+// The beams of per-bin point counts sorted by bin, lowest first.
+std::vector<ElevationBeam> elevation_beams(const std::vector<std::pair<std::int64_t, std::size_t>>& sorted_counts);
 
 // Per point, the beam it lies on, numbered by elevation from the origin: beams are the runs of
 // adjacent occupied bins (cfg.scan_elevation_bin_degrees) holding a ring's worth of points, as

@@ -5,14 +5,13 @@
 #include <unordered_map>
 #include <vector>
 
+#include "segment/scan_beams.hpp"
+
 namespace cloudshape::segment {
 
 std::optional<Point> scan_origin(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
-  constexpr double kDegrees = 180.0 / 3.14159265358979323846;
   constexpr std::size_t kMinPoints = 100;
-  // A beam holds a ring's worth of returns; a sparse cloud leaves bins empty by chance alone.
-  constexpr double kMinPerBeam = 10.0;
   // Fewer beams than the fewest a multi-beam lidar has: a plane through the origin fills one bin.
   constexpr std::size_t kMinBeams = 4;
   const double bin = cfg.scan_elevation_bin_degrees;
@@ -27,11 +26,9 @@ std::optional<Point> scan_origin(const PointList& points, const config::SegmentC
     auto& counts = block_counts[begin / per_block];
     std::size_t& used = block_used[begin / per_block];
     for (std::size_t i = begin; i < end; ++i) {
-      const Point& p = points[i];
-      const double horizontal = std::hypot(p.x(), p.y());
-      if (!p.allFinite() || (horizontal == 0.0 && p.z() == 0.0)) continue;
-      const auto b = static_cast<std::int64_t>(std::floor(std::atan2(p.z(), horizontal) * kDegrees / bin));
-      ++counts[b];
+      const std::optional<std::int64_t> b = elevation_bin(points[i], bin);
+      if (!b) continue;
+      ++counts[*b];
       ++used;
     }
   });
@@ -42,21 +39,16 @@ std::optional<Point> scan_origin(const PointList& points, const config::SegmentC
     used += block_used[k];
   }
   if (used < kMinPoints) return std::nullopt;
-  // A beam is a run of adjacent occupied bins with empty ones either side, holding a ring's worth
-  // of points; a surface sampled any other way fills long runs (or, sparse, leaves a few points
-  // in each of many short ones).
+  // Beams (runs of adjacent occupied bins holding a ring's worth of points); a surface sampled
+  // any other way fills long runs (or, sparse, leaves a few points in each of many short ones).
   std::vector<std::pair<std::int64_t, std::size_t>> bins(counts.begin(), counts.end());
   std::sort(bins.begin(), bins.end());
-  std::size_t beams = 0, width = 0, in_beams = 0;
-  for (std::size_t k = 0; k < bins.size();) {
-    std::size_t end = k + 1, run = bins[k].second;
-    while (end < bins.size() && bins[end].first == bins[end - 1].first + 1) run += bins[end++].second;
-    if (static_cast<double>(run) >= kMinPerBeam) {
-      ++beams;
-      width += static_cast<std::size_t>(bins[end - 1].first - bins[k].first + 1);
-      in_beams += run;
-    }
-    k = end;
+  const std::vector<ElevationBeam> found = elevation_beams(bins);
+  const std::size_t beams = found.size();
+  std::size_t width = 0, in_beams = 0;
+  for (const ElevationBeam& b : found) {
+    width += static_cast<std::size_t>(b.last_bin - b.first_bin + 1);
+    in_beams += b.points;
   }
   if (beams < kMinBeams || static_cast<double>(width) > cfg.scan_beam_bins * static_cast<double>(beams) ||
       static_cast<double>(in_beams) < cfg.scan_beam_share * static_cast<double>(used)) {

@@ -154,8 +154,9 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
   SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt);
-  // A lidar frame's object on fewer beams than a curve needs is a strip of its ground or walls:
-  // its vertical profile (what tells a sphere from a cylinder or a box) was never sampled.
+  // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
+  // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is
+  // a leftover of that plane.
   if (!grid.organized() && out.viewpoint && !out.objects.empty()) {
     const std::vector<std::int32_t> beam_of = scan_beam_of_points(points, cfg);
     const auto min_beams = static_cast<std::size_t>(cfg.scan_object_min_beams);
