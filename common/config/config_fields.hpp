@@ -159,6 +159,11 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("box_outline_min_share", c.box_outline_min_share);
   f("stray_face_degrees", c.stray_face_degrees);
   f("stray_face_share", c.stray_face_share);
+  f("box_slanted_width_ratio", c.box_slanted_width_ratio);
+  f("box_edge_distance", c.box_edge_distance);
+  f("box_step_min_share", c.box_step_min_share);
+  f("box_step_depth", c.box_step_depth);
+  f("box_step_share", c.box_step_share);
   f("prism_side_fill", c.prism_side_fill);
   f("prism_run_gap", c.prism_run_gap);
   f("prism_corner_gap", c.prism_corner_gap);

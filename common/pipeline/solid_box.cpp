@@ -96,6 +96,9 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
       in.cfg.stray_face_share)
     return std::nullopt;
   if (!faces_are_rectangles(in, faces)) return std::nullopt;
+  if (detail::slanted_neighbour_face(in, faces, face_directions(frame), std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) ||
+      detail::face_is_step(in, faces, face_directions(frame), cos_parallel))
+    return std::nullopt;
 
   std::array<double, 3> lo{}, hi{};
   for (int k = 0; k < 3; ++k) {

@@ -145,6 +145,20 @@ std::size_t points_on_planes_along(const PlaneSegmentation& planes,
 double stray_face_share(const std::vector<const DetectedPlane*>& faces,
                         const std::vector<Eigen::Vector3d>& directions, double cos_along);
 
+// A face along none of `directions` (within acos(cos_along)) that shares an edge
+// (solve.box_edge_distance) with a face along one of them (within solve.parallel_degrees), at a slant (off parallel and off square
+// by acos(cos_along)), the two comparably wide across it
+// (solve.box_slanted_width_ratio): a prism's side meeting its neighbour at 60 or 120 deg.
+bool slanted_neighbour_face(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
+                            const std::vector<Eigen::Vector3d>& directions, double cos_along);
+
+// A face along one of `directions` (within acos(cos_along)) holding solve.box_step_min_share of
+// the faces' points with more than solve.box_step_share of them on each side of its plane,
+// farther than solve.box_step_depth of the points' extent along its normal: the inner face of an
+// L or T, no face of a convex solid.
+bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
+                  const std::vector<Eigen::Vector3d>& directions, double cos_along);
+
 // Points that lie on none of the given faces, nor within `band` of their planes: noisy
 // points of a face that fell outside its fine RANSAC band are still the face's.
 std::vector<std::uint32_t> points_off_faces(const PointList& cloud,
