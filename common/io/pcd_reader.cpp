@@ -104,9 +104,10 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
   std::size_t rows = 0;
   while (lines.next(line)) {
     if (detail::is_blank(line)) continue;
-    const std::string place = at_line(lines.line_number());
+    const std::size_t line_number = lines.line_number();
+    const auto place = [line_number] { return at_line(line_number); };  // only named in an error
     if (rows == h.points) {
-      throw ReadError(name, place, "header/data count mismatch: more data rows than the " +
+      throw ReadError(name, place(), "header/data count mismatch: more data rows than the " +
                                        std::to_string(h.points) + " POINTS declared");
     }
     detail::TokenCursor tokens(line);
@@ -118,12 +119,12 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
       for (std::size_t k = 0; k < h.fields[f].count; ++k, ++seen) {
         std::string_view token;
         if (!tokens.next(token)) {
-          throw ReadError(name, place, "too few values: expected " + std::to_string(h.values_per_point) +
+          throw ReadError(name, place(), "too few values: expected " + std::to_string(h.values_per_point) +
                                            ", found " + std::to_string(seen));
         }
         double value = 0.0;
         if (!detail::parse_double(token, value)) {
-          throw ReadError(name, place, "non-numeric value " + detail::quoted(token) + " in field " +
+          throw ReadError(name, place(), "non-numeric value " + detail::quoted(token) + " in field " +
                                            detail::quoted(h.fields[f].name));
         }
         if (axis >= 0) xyz[axis] = detail::as_declared(value, h.fields[f].type);
@@ -131,7 +132,7 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
       }
     }
     if (!tokens.at_end()) {
-      throw ReadError(name, place, "too many values: expected " + std::to_string(h.values_per_point));
+      throw ReadError(name, place(), "too many values: expected " + std::to_string(h.values_per_point));
     }
     sink.add(rows, xyz[0], xyz[1], xyz[2], label);
     ++rows;
