@@ -166,10 +166,10 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 }  // namespace
 
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                            parallel::ThreadPool* pool) {
+                                            parallel::ThreadPool* pool, const Bounds* bounds) {
   std::vector<double> out(queries.size(), 0.0);
   if (points.size() < 2) return out;
-  const Bounds box = bounding_box(points);
+  const Bounds box = bounds ? *bounds : bounding_box(points);
   const double cell = spacing_cell(box, points.size());
   const double inv = 1.0 / cell;
   const Eigen::Vector3d extent = (box.max - box.min) * inv;
