@@ -180,19 +180,23 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
     ++g.adjacency_begin[b + 1];
   }
   for (std::size_t n = 0; n < nodes; ++n) g.adjacency_begin[n + 1] += g.adjacency_begin[n];
-  g.adjacency.resize(2 * pairs.size());
+  // The rows in pair order first; then read back node by node, each node appended to the rows
+  // of its neighbours: the edges are symmetric, so every row comes out sorted (no sort).
+  std::vector<std::uint32_t> unsorted(2 * pairs.size());
   {
     std::vector<std::uint32_t> next(g.adjacency_begin.begin(), g.adjacency_begin.end() - 1);
     for (const auto& [a, b] : pairs) {
-      g.adjacency[next[a]++] = b;
-      g.adjacency[next[b]++] = a;
+      unsorted[next[a]++] = b;
+      unsorted[next[b]++] = a;
     }
   }
-  parallel::for_blocks(pool, nodes, kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t n = begin; n < end; ++n) {
-      std::sort(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
+  g.adjacency.resize(unsorted.size());
+  {
+    std::vector<std::uint32_t> next(g.adjacency_begin.begin(), g.adjacency_begin.end() - 1);
+    for (std::uint32_t b = 0; b < nodes; ++b) {
+      for (std::uint32_t e = g.adjacency_begin[b]; e < g.adjacency_begin[b + 1]; ++e) g.adjacency[next[unsorted[e]]++] = b;
     }
-  });
+  }
   fill_spacing(g, voxel, pool);
 
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
