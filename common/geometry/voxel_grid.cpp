@@ -114,7 +114,8 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   return occupied;
 }
 
-double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool) {
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool,
+                                       const Bounds* bounds) {
   if (points.size() < 2) return 0.0;
   const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));
   std::vector<std::uint32_t> sample;
@@ -122,7 +123,7 @@ double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_
   double sum = 0.0;
   // The grid's one binning pass beats a kd-tree's sorting on big clouds only; both are exact.
   if (points.size() > kGridFrom) {
-    for (double d : nearest_other_distances(points, sample, pool)) sum += d;
+    for (double d : nearest_other_distances(points, sample, pool, bounds)) sum += d;
     return sum / static_cast<double>(sample.size());
   }
   const KdTree tree(points);
