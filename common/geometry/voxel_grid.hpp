@@ -7,6 +7,8 @@
 
 namespace cloudshape::geometry {
 
+class KdTree;
+
 struct Bounds {
   Point min = Point::Zero();
   Point max = Point::Zero();
@@ -32,6 +34,10 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
 // A `pool` shares the grid's pass over the points out (large clouds): the same value.
 double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
+                                       parallel::ThreadPool* pool = nullptr);
+
+// The same value over `tree`'s points, asking `tree` where the list version would build one.
+double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_samples = 4000,
                                        parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::geometry
