@@ -1,6 +1,8 @@
 #include "geometry/convex_hull.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 namespace cloudshape::geometry {
 namespace {
@@ -12,6 +14,68 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 }
 
 }  // namespace
+
+std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
+  if (points.size() < 32) return points;
+  // Extremes along 0, 45, ..., 315 degrees, so that the octagon runs counter-clockwise.
+  std::array<std::size_t, 8> at{};
+  double x0 = -HUGE_VAL, x1 = -HUGE_VAL, x2 = -HUGE_VAL, x3 = -HUGE_VAL;
+  double x4 = -HUGE_VAL, x5 = -HUGE_VAL, x6 = -HUGE_VAL, x7 = -HUGE_VAL;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double x = points[i].x(), y = points[i].y(), s = x + y, d = x - y;
+    if (x > x0) x0 = x, at[0] = i;
+    if (s > x1) x1 = s, at[1] = i;
+    if (y > x2) x2 = y, at[2] = i;
+    if (-d > x3) x3 = -d, at[3] = i;
+    if (-x > x4) x4 = -x, at[4] = i;
+    if (-s > x5) x5 = -s, at[5] = i;
+    if (-y > x6) x6 = -y, at[6] = i;
+    if (d > x7) x7 = d, at[7] = i;
+  }
+  if (!std::isfinite(x0 + x2 + x4 + x6)) return points;
+  const double extent = std::max(x0 + x4, x2 + x6);
+  const double magnitude = std::max(std::max(std::abs(x0), std::abs(x4)), std::max(std::abs(x2), std::abs(x6)));
+  // A cross product's rounding is a few ulps of (extent + magnitude) * extent; the margin is far
+  // above it, so a point dropped is inside the hull whatever the rounding.
+  const double margin = 1e-9 * extent * (extent + magnitude);
+  // An edge as a line a x + b y + c, positive inside; `through` the corners `step` apart.
+  using Line = std::array<double, 3>;
+  auto lines = [&](int first, int step) {
+    std::vector<Line> out;
+    for (int k = first; k < 8; k += step) {
+      const Vec2& o = points[at[k]];
+      const Vec2& e = points[at[(k + step) % 8]];
+      if (o == e) continue;
+      const double a = o.y() - e.y(), b = e.x() - o.x();
+      out.push_back({a, b, -(a * o.x() + b * o.y())});
+    }
+    return out;
+  };
+  auto inside = [&](const std::vector<Line>& edges, const Vec2& q) {
+    for (const Line& l : edges)
+      if (!(l[0] * q.x() + l[1] * q.y() + l[2] > margin)) return false;
+    return true;
+  };
+  const std::vector<Line> octagon = lines(0, 1);
+  if (octagon.size() < 3) return points;
+  // Most inner points fall inside one of the octagon's two quadrilaterals (the one of the axis
+  // extremes holds a rotated rectangle, the diagonal one an upright one): four tests, not eight.
+  auto area = [&](int first) {
+    double twice = 0.0;
+    for (int k = first; k < 8; k += 2) {
+      const Vec2& o = points[at[k]];
+      const Vec2& e = points[at[(k + 2) % 8]];
+      twice += o.x() * e.y() - o.y() * e.x();
+    }
+    return twice;
+  };
+  const std::vector<Line> quad = lines(area(0) >= area(1) ? 0 : 1, 2);
+  std::vector<Vec2> out;
+  out.reserve(points.size() / 2);
+  for (const Vec2& q : points)
+    if (!(quad.size() >= 3 && inside(quad, q)) && !inside(octagon, q)) out.push_back(q);
+  return out;
+}
 
 std::vector<Vec2> convex_hull_2d(std::vector<Vec2> p) {
   std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
