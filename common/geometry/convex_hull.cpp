@@ -17,11 +17,14 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 
 std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
   if (points.size() < 32) return points;
-  // Extremes along 0, 45, ..., 315 degrees, so that the octagon runs counter-clockwise.
+  // Extremes along 0, 45, ..., 315 degrees, so that the octagon runs counter-clockwise. Any
+  // points of the set would do as its corners (a point inside all of its edges is inside their
+  // hull, convex or not): the extremes of every second point give nearly the whole octagon.
+  constexpr std::size_t kStride = 2;
   std::array<std::size_t, 8> at{};
   double x0 = -HUGE_VAL, x1 = -HUGE_VAL, x2 = -HUGE_VAL, x3 = -HUGE_VAL;
   double x4 = -HUGE_VAL, x5 = -HUGE_VAL, x6 = -HUGE_VAL, x7 = -HUGE_VAL;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  for (std::size_t i = 0; i < points.size(); i += kStride) {
     const double x = points[i].x(), y = points[i].y(), s = x + y, d = x - y;
     if (x > x0) x0 = x, at[0] = i;
     if (s > x1) x1 = s, at[1] = i;
@@ -38,26 +41,26 @@ std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
   // A cross product's rounding is a few ulps of (extent + magnitude) * extent; the margin is far
   // above it, so a point dropped is inside the hull whatever the rounding.
   const double margin = 1e-9 * extent * (extent + magnitude);
-  // An edge as a line a x + b y + c, positive inside; `through` the corners `step` apart.
-  using Line = std::array<double, 3>;
+  // Edges as lines a x + b y + c, positive inside, between the corners `step` apart; a repeated
+  // corner gives no edge.
+  struct Lines {
+    std::array<double, 8> a{}, b{}, c{};
+    int count = 0;
+  };
   auto lines = [&](int first, int step) {
-    std::vector<Line> out;
+    Lines out;
     for (int k = first; k < 8; k += step) {
       const Vec2& o = points[at[k]];
       const Vec2& e = points[at[(k + step) % 8]];
       if (o == e) continue;
-      const double a = o.y() - e.y(), b = e.x() - o.x();
-      out.push_back({a, b, -(a * o.x() + b * o.y())});
+      out.a[out.count] = o.y() - e.y(), out.b[out.count] = e.x() - o.x();
+      out.c[out.count] = -(out.a[out.count] * o.x() + out.b[out.count] * o.y());
+      ++out.count;
     }
     return out;
   };
-  auto inside = [&](const std::vector<Line>& edges, const Vec2& q) {
-    for (const Line& l : edges)
-      if (!(l[0] * q.x() + l[1] * q.y() + l[2] > margin)) return false;
-    return true;
-  };
-  const std::vector<Line> octagon = lines(0, 1);
-  if (octagon.size() < 3) return points;
+  const Lines octagon = lines(0, 1);
+  if (octagon.count < 3) return points;
   // Most inner points fall inside one of the octagon's two quadrilaterals (the one of the axis
   // extremes holds a rotated rectangle, the diagonal one an upright one): four tests, not eight.
   auto area = [&](int first) {
@@ -69,11 +72,24 @@ std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
     }
     return twice;
   };
-  const std::vector<Line> quad = lines(area(0) >= area(1) ? 0 : 1, 2);
+  Lines quad = lines(area(0) >= area(1) ? 0 : 1, 2);
+  if (quad.count < 3) quad = octagon;
+  // A missing edge of the quadrilateral is a line every point passes.
+  for (int k = quad.count; k < 4; ++k) quad.a[k] = 0.0, quad.b[k] = 0.0, quad.c[k] = HUGE_VAL;
   std::vector<Vec2> out;
   out.reserve(points.size() / 2);
-  for (const Vec2& q : points)
-    if (!(quad.size() >= 3 && inside(quad, q)) && !inside(octagon, q)) out.push_back(q);
+  for (const Vec2& q : points) {
+    const double x = q.x(), y = q.y();
+    const bool in_quad = (quad.a[0] * x + quad.b[0] * y + quad.c[0] > margin) &
+                         (quad.a[1] * x + quad.b[1] * y + quad.c[1] > margin) &
+                         (quad.a[2] * x + quad.b[2] * y + quad.c[2] > margin) &
+                         (quad.a[3] * x + quad.b[3] * y + quad.c[3] > margin);
+    if (in_quad) continue;
+    bool in_octagon = true;
+    for (int k = 0; k < octagon.count && in_octagon; ++k)
+      in_octagon = octagon.a[k] * x + octagon.b[k] * y + octagon.c[k] > margin;
+    if (!in_octagon) out.push_back(q);
+  }
   return out;
 }
 
