@@ -18,8 +18,9 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
   if (points.size() < 32) return points;
   // Extremes along 0, 45, ..., 315 degrees, so that the octagon runs counter-clockwise. Any
-  // points of the set would do as its corners (a point inside all of its edges is inside their
-  // hull, convex or not): the extremes of every second point give nearly the whole octagon.
+  // closed chain of the set's points would do as its outline (a point left of all of its edges is
+  // wound round, so inside their hull, convex or not): the extremes of every second point give
+  // nearly the whole octagon.
   constexpr std::size_t kStride = 2;
   std::array<std::size_t, 8> at{};
   double x0 = -HUGE_VAL, x1 = -HUGE_VAL, x2 = -HUGE_VAL, x3 = -HUGE_VAL;
@@ -37,7 +38,8 @@ std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
   }
   if (!std::isfinite(x0 + x2 + x4 + x6)) return points;
   const double extent = std::max(x0 + x4, x2 + x6);
-  const double magnitude = std::max(std::max(std::abs(x0), std::abs(x4)), std::max(std::abs(x2), std::abs(x6)));
+  const double magnitude =
+      std::max(std::max(std::abs(x0), std::abs(x4)), std::max(std::abs(x2), std::abs(x6)));
   // A cross product's rounding is a few ulps of (extent + magnitude) * extent; the margin is far
   // above it, so a point dropped is inside the hull whatever the rounding.
   const double margin = 1e-9 * extent * (extent + magnitude);
@@ -73,9 +75,10 @@ std::vector<Vec2> hull_candidates(const std::vector<Vec2>& points) {
     return twice;
   };
   Lines quad = lines(area(0) >= area(1) ? 0 : 1, 2);
-  if (quad.count < 3) quad = octagon;
-  // A missing edge of the quadrilateral is a line every point passes.
-  for (int k = quad.count; k < 4; ++k) quad.a[k] = 0.0, quad.b[k] = 0.0, quad.c[k] = HUGE_VAL;
+  // A repeated corner's missing edge is a line every point passes (the others still close the
+  // chain); with no edge at all no point is inside.
+  for (int k = quad.count; k < 4; ++k)
+    quad.a[k] = 0.0, quad.b[k] = 0.0, quad.c[k] = quad.count > 0 ? HUGE_VAL : -HUGE_VAL;
   std::vector<Vec2> out;
   out.reserve(points.size() / 2);
   for (const Vec2& q : points) {
