@@ -7,6 +7,8 @@
 
 namespace cloudshape::geometry {
 
+class KdTree;
+
 struct Bounds {
   Point min = Point::Zero();
   Point max = Point::Zero();
@@ -34,5 +36,9 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
 // as above.
 double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
                                        parallel::ThreadPool* pool = nullptr, const Bounds* bounds = nullptr);
+
+// The same value over `tree`'s points, asking `tree` where the list version would build one.
+double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_samples = 4000,
+                                       parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::geometry

@@ -9,6 +9,30 @@
 namespace cloudshape::geometry {
 namespace {
 
+TEST(KdTree, AnOwningTreeAnswersAsOneOverTheListItWasMadeFrom) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1, 1);
+  PointList pts;
+  for (int i = 0; i < 2000; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  const KdTree over(pts);
+  PointList copy = pts;
+  const KdTree owning(std::move(copy));
+  copy.assign(10, Point::Zero());  // the caller's list is free again: the tree kept its own
+  ASSERT_EQ(owning.points().size(), pts.size());
+  std::vector<std::uint32_t> a, b;
+  std::vector<double> da, db;
+  for (int q = 0; q < 50; ++q) {
+    const Point query(u(rng), u(rng), u(rng));
+    over.knn(query, 14, a, &da);
+    owning.knn(query, 14, b, &db);
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(da, db);
+    over.radius(query, 0.2, a);
+    owning.radius(query, 0.2, b);
+    EXPECT_EQ(a, b);  // the same order too: RANSAC draws from it by position
+  }
+}
+
 TEST(KdTree, KnnMatchesBruteForce) {
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(-1, 1);
