@@ -9,11 +9,18 @@
 namespace cloudshape::geometry {
 namespace {
 
-TEST(KdTree, AnOwningTreeAnswersAsOneOverTheListItWasMadeFrom) {
-  std::mt19937_64 rng(4);
+// `count` points uniform in the cube [-1, 1]^3, drawn from `rng` (later queries draw on from it).
+PointList cube_points(std::mt19937_64& rng, int count) {
   std::uniform_real_distribution<double> u(-1, 1);
   PointList pts;
-  for (int i = 0; i < 2000; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  for (int i = 0; i < count; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  return pts;
+}
+
+TEST(KdTree, AnOwningTreeAnswersAsOneOverTheListItWasMadeFrom) {
+  std::mt19937_64 rng(4);
+  const PointList pts = cube_points(rng, 2000);
+  std::uniform_real_distribution<double> u(-1, 1);
   const KdTree over(pts);
   PointList copy = pts;
   const KdTree owning(std::move(copy));
@@ -35,9 +42,8 @@ TEST(KdTree, AnOwningTreeAnswersAsOneOverTheListItWasMadeFrom) {
 
 TEST(KdTree, KnnMatchesBruteForce) {
   std::mt19937_64 rng(1);
+  const PointList pts = cube_points(rng, 3000);
   std::uniform_real_distribution<double> u(-1, 1);
-  PointList pts;
-  for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
   const KdTree tree(pts);
   std::vector<std::uint32_t> idx;
   std::vector<double> d2;
