@@ -5,6 +5,10 @@
 #include <cmath>
 #include <limits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/kdtree.hpp"
 #include "geometry/voxel_grid.hpp"
@@ -166,10 +170,10 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 }  // namespace
 
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                            parallel::ThreadPool* pool) {
+                                            parallel::ThreadPool* pool, const Bounds* bounds) {
   std::vector<double> out(queries.size(), 0.0);
   if (points.size() < 2) return out;
-  const Bounds box = bounding_box(points);
+  const Bounds box = bounds ? *bounds : bounding_box(points);
   const double cell = spacing_cell(box, points.size());
   const double inv = 1.0 / cell;
   const Eigen::Vector3d extent = (box.max - box.min) * inv;
@@ -280,7 +284,7 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
       // One candidate list per cell (its 27-cell block), shared by every point of the cell, its
       // coordinates apart so that the distances to all of them vectorise.
       std::vector<std::uint32_t> candidates;
-      std::vector<double> cx, cy, cz, dist;
+      std::vector<double> cx, cy, cz;
       std::vector<std::pair<double, std::uint32_t>> wide;
       std::vector<double> best_d(k);
       std::vector<std::uint32_t> best_i(k), best_slot(k), earlier_slots;
@@ -295,7 +299,6 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
         cx.resize(m);
         cy.resize(m);
         cz.resize(m);
-        dist.resize(m);
         for (std::size_t j = 0; j < m; ++j) {
           cx[j] = points[candidates[j]].x();
           cy[j] = points[candidates[j]].y();
@@ -308,14 +311,14 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
         for (const std::uint32_t* it = first; it != grid.members_end(static_cast<std::uint32_t>(s)); ++it) {
           const std::uint32_t i = *it;
           const double qx = points[i].x(), qy = points[i].y(), qz = points[i].z();
-          // squared_distance's sum, term by term.
-          for (std::size_t j = 0; j < m; ++j) {
+          // squared_distance's sum, term by term (in SSE2's IEEE lanes below too: the same bits).
+          const auto distance_to = [&](std::size_t j) {
             const double dx = qx - cx[j], dy = qy - cy[j], dz = qz - cz[j];
             double d = dx * dx;
             d += dy * dy;
             d += dz * dz;
-            dist[j] = d;
-          }
+            return d;
+          };
           // Only points within the block's reach can be among the k nearest, unless fewer than
           // k are: then wider rings or the kd-tree answer. The k nearest of an earlier point are
           // k candidates too: this point's k nearest are no farther than the farthest of them (a
@@ -325,20 +328,23 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
           // The earlier point nearest this one (its own slot is the first of its k) gives the bound.
           if (answered > 0) {
             std::size_t nearest = 0;
+            double nearest_d = distance_to(earlier_slots[0]);
             for (std::size_t e = 1; e < answered; ++e) {
-              if (dist[earlier_slots[e * k]] < dist[earlier_slots[nearest * k]]) nearest = e;
+              const double d = distance_to(earlier_slots[e * k]);
+              if (d < nearest_d) {
+                nearest = e;
+                nearest_d = d;
+              }
             }
             double farthest = 0.0;
-            for (std::size_t j = 0; j < k; ++j) farthest = std::max(farthest, dist[earlier_slots[nearest * k + j]]);
+            for (std::size_t j = 0; j < k; ++j) farthest = std::max(farthest, distance_to(earlier_slots[nearest * k + j]));
             limit = std::min(limit, farthest);
           }
           std::size_t within = 0, count = 0;
-          for (std::size_t j = 0; j < m; ++j) {
-            const double d = dist[j];
-            if (!(d <= limit)) continue;
+          const auto rank = [&](std::size_t j, double d) {
             ++within;
             const std::uint32_t id = candidates[j];
-            if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) continue;
+            if (count == k && !closer(d, id, best_d[k - 1], best_i[k - 1])) return;
             std::size_t at = count < k ? count++ : k - 1;
             while (at > 0 && closer(d, id, best_d[at - 1], best_i[at - 1])) {
               best_d[at] = best_d[at - 1];
@@ -349,6 +355,28 @@ void all_nearest_neighbours(const PointList& points, std::size_t k, double cell,
             best_d[at] = d;
             best_i[at] = id;
             best_slot[at] = static_cast<std::uint32_t>(j);
+          };
+          // The distances and the limit in one pass, two candidates at a time where SSE2 is: a
+          // pair neither of which is within the limit (most) costs no branch of its own.
+          std::size_t j = 0;
+#if defined(__SSE2__)
+          const __m128d vqx = _mm_set1_pd(qx), vqy = _mm_set1_pd(qy), vqz = _mm_set1_pd(qz), vlimit = _mm_set1_pd(limit);
+          for (; j + 2 <= m; j += 2) {
+            const __m128d dx = _mm_sub_pd(vqx, _mm_loadu_pd(cx.data() + j));
+            const __m128d dy = _mm_sub_pd(vqy, _mm_loadu_pd(cy.data() + j));
+            const __m128d dz = _mm_sub_pd(vqz, _mm_loadu_pd(cz.data() + j));
+            const __m128d d = _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+            const int near = _mm_movemask_pd(_mm_cmple_pd(d, vlimit));
+            if (near == 0) continue;
+            alignas(16) double lane[2];
+            _mm_store_pd(lane, d);
+            if (near & 1) rank(j, lane[0]);
+            if (near & 2) rank(j + 1, lane[1]);
+          }
+#endif
+          for (; j < m; ++j) {
+            const double d = distance_to(j);
+            if (d <= limit) rank(j, d);
           }
           // Fewer than k within the limit happens only when the reach sets it (the bound has k).
           if (within < k) {

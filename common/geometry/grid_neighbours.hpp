@@ -6,15 +6,17 @@
 #include <vector>
 
 #include "geometry/point_cloud.hpp"
+#include "geometry/voxel_grid.hpp"
 #include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 
 // Distance from points[i] to its nearest other point, for each i of `queries`, in their order
 // (exact: a query whose neighbour the grid cannot vouch for is answered by a kd-tree).
-// With a `pool`, blocks of points run on its threads: the same distances.
+// With a `pool`, blocks of points run on its threads: the same distances. `bounds`, if given, must
+// be bounding_box(points) (a caller that has it saves the pass).
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                            parallel::ThreadPool* pool = nullptr);
+                                            parallel::ThreadPool* pool = nullptr, const Bounds* bounds = nullptr);
 
 // The k nearest points (itself included) of every point, nearest first: row i of the
 // n x min(k, n) result in `out`. `cell` should be about the k-th neighbour's distance (a larger

@@ -48,6 +48,9 @@ struct KdTree::Index {
 
 KdTree::KdTree(const PointList& points) : points_(points), index_(std::make_unique<Index>(points)) {}
 
+KdTree::KdTree(PointList&& points)
+    : owned_(std::move(points)), points_(owned_), index_(std::make_unique<Index>(owned_)) {}
+
 KdTree::~KdTree() = default;
 
 void KdTree::knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& indices,

@@ -1,5 +1,5 @@
 // k-nearest-neighbour and radius queries over a PointList, through nanoflann.
-// The tree keeps a reference to the points: they must outlive it unchanged.
+// The tree keeps a reference to the points (they must outlive it unchanged) or owns them.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +13,8 @@ namespace cloudshape::geometry {
 class KdTree {
  public:
   explicit KdTree(const PointList& points);
+  // Owns the points: a tree that travels with an object's cloud (shared by its stages).
+  explicit KdTree(PointList&& points);
   ~KdTree();
   KdTree(const KdTree&) = delete;
   KdTree& operator=(const KdTree&) = delete;
@@ -29,6 +31,7 @@ class KdTree {
 
  private:
   struct Index;
+  PointList owned_;
   const PointList& points_;
   std::unique_ptr<Index> index_;
 };

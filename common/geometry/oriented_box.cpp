@@ -73,8 +73,9 @@ Eigen::Matrix3d rectangle_frame(const PointList& points, const Eigen::Matrix3d& 
   const Eigen::Vector3d e1 = frame.row((a + 1) % 3).transpose();
   const Eigen::Vector3d e2 = up.cross(e1);
   std::vector<Vec2> projected;
+  projected.reserve(points.size());
   for (const Point& p : points) projected.emplace_back(p.dot(e1), p.dot(e2));
-  const Vec2 d = min_area_direction(convex_hull_2d(std::move(projected)));
+  const Vec2 d = min_area_direction(convex_hull_2d(hull_candidates(projected)));
   Eigen::Matrix3d f;
   f.row(0) = (d.x() * e1 + d.y() * e2).transpose();
   f.row(1) = up.cross(f.row(0).transpose()).transpose();

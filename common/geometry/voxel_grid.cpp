@@ -114,25 +114,50 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   return occupied;
 }
 
-double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool) {
-  if (points.size() < 2) return 0.0;
-  const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, max_samples));
+namespace {
+
+std::vector<std::uint32_t> spread_sample(std::size_t size, std::size_t max_samples) {
+  const std::size_t step = std::max<std::size_t>(1, size / std::max<std::size_t>(1, max_samples));
   std::vector<std::uint32_t> sample;
-  for (std::size_t i = 0; i < points.size(); i += step) sample.push_back(static_cast<std::uint32_t>(i));
+  for (std::size_t i = 0; i < size; i += step) sample.push_back(static_cast<std::uint32_t>(i));
+  return sample;
+}
+
+double mean_over_grid(const PointList& points, const std::vector<std::uint32_t>& sample, parallel::ThreadPool* pool,
+                      const Bounds* bounds) {
   double sum = 0.0;
-  // The grid's one binning pass beats a kd-tree's sorting on big clouds only; both are exact.
-  if (points.size() > kGridFrom) {
-    for (double d : nearest_other_distances(points, sample, pool)) sum += d;
-    return sum / static_cast<double>(sample.size());
-  }
-  const KdTree tree(points);
+  for (double d : nearest_other_distances(points, sample, pool, bounds)) sum += d;
+  return sum / static_cast<double>(sample.size());
+}
+
+double mean_over_tree(const KdTree& tree, const std::vector<std::uint32_t>& sample) {
+  double sum = 0.0;
   std::vector<std::uint32_t> idx;
   std::vector<double> d2;
   for (std::uint32_t i : sample) {
-    tree.knn(points[i], 2, idx, &d2);
+    tree.knn(tree.points()[i], 2, idx, &d2);
     sum += std::sqrt(d2[1]);
   }
   return sum / static_cast<double>(sample.size());
+}
+
+}  // namespace
+
+// The grid's one binning pass beats a kd-tree's sorting on big clouds only; both are exact.
+double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples, parallel::ThreadPool* pool,
+                                       const Bounds* bounds) {
+  if (points.size() < 2) return 0.0;
+  const std::vector<std::uint32_t> sample = spread_sample(points.size(), max_samples);
+  if (points.size() > kGridFrom) return mean_over_grid(points, sample, pool, bounds);
+  return mean_over_tree(KdTree(points), sample);
+}
+
+double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_samples, parallel::ThreadPool* pool) {
+  const PointList& points = tree.points();
+  if (points.size() < 2) return 0.0;
+  const std::vector<std::uint32_t> sample = spread_sample(points.size(), max_samples);
+  if (points.size() > kGridFrom) return mean_over_grid(points, sample, pool, nullptr);
+  return mean_over_tree(tree, sample);
 }
 
 }  // namespace cloudshape::geometry

@@ -7,6 +7,8 @@
 
 namespace cloudshape::geometry {
 
+class KdTree;
+
 struct Bounds {
   Point min = Point::Zero();
   Point max = Point::Zero();
@@ -30,8 +32,13 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
 
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
-// A `pool` shares the grid's pass over the points out (large clouds): the same value.
+// A `pool` shares the grid's pass over the points out (large clouds): the same value. `bounds`
+// as above.
 double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_samples = 4000,
+                                       parallel::ThreadPool* pool = nullptr, const Bounds* bounds = nullptr);
+
+// The same value over `tree`'s points, asking `tree` where the list version would build one.
+double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_samples = 4000,
                                        parallel::ThreadPool* pool = nullptr);
 
 }  // namespace cloudshape::geometry

@@ -56,6 +56,31 @@ class PointSink {
     if (labelled_) out_.labels.push_back(as_label(label));
   }
 
+  // The binary layouts: room for all `n` points, each finite one written in place by put (no
+  // capacity test per point), and the room cut to the ones kept by finish.
+  void make_room(std::size_t n) {
+    out_.points.resize(n);
+    if (organized_) out_.grid.pixel.resize(n);
+    if (labelled_) out_.labels.resize(n);
+  }
+  // As add, after make_room; `label` is called for the label of a point kept in a labelled cloud.
+  template <class Label>
+  void put(std::size_t index, double x, double y, double z, const Label& label) {
+    if (!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z))) {
+      ++out_.non_finite_dropped;
+      return;
+    }
+    out_.points[kept_] = Point(x, y, z);
+    if (organized_) out_.grid.pixel[kept_] = static_cast<std::uint32_t>(index);
+    if (labelled_) out_.labels[kept_] = as_label(label());
+    ++kept_;
+  }
+  void finish() {
+    out_.points.resize(kept_);
+    if (organized_) out_.grid.pixel.resize(kept_);
+    if (labelled_) out_.labels.resize(kept_);
+  }
+
  private:
   static std::uint32_t as_label(double v) {
     return std::isfinite(v) && v >= 0.0 && v <= 4294967295.0 ? static_cast<std::uint32_t>(v) : 0;
@@ -64,6 +89,7 @@ class PointSink {
   CloudFile& out_;
   bool organized_;
   bool labelled_;
+  std::size_t kept_ = 0;  // points put so far
 };
 
 void read_ascii(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {
@@ -78,9 +104,10 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
   std::size_t rows = 0;
   while (lines.next(line)) {
     if (detail::is_blank(line)) continue;
-    const std::string place = at_line(lines.line_number());
+    const std::size_t line_number = lines.line_number();
+    const auto place = [line_number] { return at_line(line_number); };  // only named in an error
     if (rows == h.points) {
-      throw ReadError(name, place, "header/data count mismatch: more data rows than the " +
+      throw ReadError(name, place(), "header/data count mismatch: more data rows than the " +
                                        std::to_string(h.points) + " POINTS declared");
     }
     detail::TokenCursor tokens(line);
@@ -92,12 +119,12 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
       for (std::size_t k = 0; k < h.fields[f].count; ++k, ++seen) {
         std::string_view token;
         if (!tokens.next(token)) {
-          throw ReadError(name, place, "too few values: expected " + std::to_string(h.values_per_point) +
+          throw ReadError(name, place(), "too few values: expected " + std::to_string(h.values_per_point) +
                                            ", found " + std::to_string(seen));
         }
         double value = 0.0;
         if (!detail::parse_double(token, value)) {
-          throw ReadError(name, place, "non-numeric value " + detail::quoted(token) + " in field " +
+          throw ReadError(name, place(), "non-numeric value " + detail::quoted(token) + " in field " +
                                            detail::quoted(h.fields[f].name));
         }
         if (axis >= 0) xyz[axis] = detail::as_declared(value, h.fields[f].type);
@@ -105,7 +132,7 @@ void read_ascii(std::string_view data, const std::string& name, const PcdHeader&
       }
     }
     if (!tokens.at_end()) {
-      throw ReadError(name, place, "too many values: expected " + std::to_string(h.values_per_point));
+      throw ReadError(name, place(), "too many values: expected " + std::to_string(h.values_per_point));
     }
     sink.add(rows, xyz[0], xyz[1], xyz[2], label);
     ++rows;
@@ -129,18 +156,18 @@ struct FieldColumn {
 
 void extract_points(const FieldColumn (&xyz)[3], const FieldColumn* label, const PcdHeader& h, CloudFile& out) {
   PointSink sink(h, out);
-  sink.reserve(h.points);
-  const bool f32 = xyz[0].type == Scalar::f32 && xyz[1].type == Scalar::f32 && xyz[2].type == Scalar::f32;
-  for (std::size_t i = 0; i < h.points; ++i) {
-    const double l = label ? label->at(i) : 0.0;
-    if (f32) {
-      sink.add(i, detail::load_raw<float>(xyz[0].start + i * xyz[0].stride),
+  sink.make_room(h.points);
+  const auto label_of = [&](std::size_t i) { return [label, i] { return label ? label->at(i) : 0.0; }; };
+  if (xyz[0].type == Scalar::f32 && xyz[1].type == Scalar::f32 && xyz[2].type == Scalar::f32) {
+    for (std::size_t i = 0; i < h.points; ++i) {
+      sink.put(i, detail::load_raw<float>(xyz[0].start + i * xyz[0].stride),
                detail::load_raw<float>(xyz[1].start + i * xyz[1].stride),
-               detail::load_raw<float>(xyz[2].start + i * xyz[2].stride), l);
-    } else {
-      sink.add(i, xyz[0].at(i), xyz[1].at(i), xyz[2].at(i), l);
+               detail::load_raw<float>(xyz[2].start + i * xyz[2].stride), label_of(i));
     }
+  } else {
+    for (std::size_t i = 0; i < h.points; ++i) sink.put(i, xyz[0].at(i), xyz[1].at(i), xyz[2].at(i), label_of(i));
   }
+  sink.finish();
 }
 
 void read_binary(std::string_view data, const std::string& name, const PcdHeader& h, CloudFile& out) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -19,6 +20,7 @@ struct ObjectCloud {
   PointList points;
   double resolution = 0.0;
   std::vector<std::uint32_t> raw_indices;  // into the raw cloud
+  std::shared_ptr<const geometry::KdTree> tree;  // over `points`, for every stage's neighbours
 };
 
 struct ObjectClouds {

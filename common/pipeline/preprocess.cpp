@@ -95,7 +95,10 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   if (cfg.smoothing)
     pts = smooth_flat_regions(pts, static_cast<std::size_t>(cfg.smoothing_neighbours),
                               cfg.smoothing_max_curvature);
-  out.resolution = geometry::mean_nearest_neighbour_distance(pts);
+  if (!pts.empty()) {
+    out.tree = std::make_shared<const geometry::KdTree>(PointList(pts));
+    out.resolution = geometry::mean_nearest_neighbour_distance(*out.tree);
+  }
   out.points = std::move(pts);
   return out;
 }

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 
 #include "config/stage_configs.hpp"
+#include "geometry/kdtree.hpp"
 #include "geometry/point_cloud.hpp"
 
 namespace cloudshape::pipeline {
@@ -14,6 +16,9 @@ struct PreprocessedCloud {
   double resolution = 0.0;  // mean nearest-neighbour distance of `points`
   double voxel_size = 0.0;  // edge of the voxel grid actually used
   std::size_t outliers_removed = 0;  // isolated voxels plus statistical outliers
+  // Over a copy of `points` (same indices): built for the resolution, kept for the object's
+  // stages that need neighbours. Null when there are no points.
+  std::shared_ptr<const geometry::KdTree> tree;
 };
 
 // Non-finite points must have been dropped by the reader. Never throws on content:

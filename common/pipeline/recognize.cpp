@@ -1,6 +1,7 @@
 #include "pipeline/recognize.hpp"
 
 #include <chrono>
+#include <optional>
 
 #include "geometry/kdtree.hpp"
 #include "pipeline/classify.hpp"
@@ -55,8 +56,10 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     const ObjectCloud& o = clouds.objects[begin];
     StageTimings& t = times[begin];
     StageClock object_clock;
-    // One search tree over the object's points for every stage that needs neighbours.
-    const geometry::KdTree tree(o.points);
+    // One search tree over the object's points for every stage that needs neighbours: the one
+    // preprocessing built for the resolution.
+    std::optional<geometry::KdTree> own_tree;
+    const geometry::KdTree& tree = o.tree ? *o.tree : own_tree.emplace(o.points);
     // The pool splits an object's own work only while it is not busy with the objects: one
     // object has both threads, several run side by side.
     const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes, &tree, pool);

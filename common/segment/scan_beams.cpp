@@ -14,6 +14,47 @@ std::optional<std::int64_t> elevation_bin(const Point& p, double bin_degrees) {
   return static_cast<std::int64_t>(std::floor(std::atan2(p.z(), horizontal) * kDegrees / bin_degrees));
 }
 
+ElevationBins::ElevationBins(double bin_degrees) : bin_degrees_(bin_degrees) {
+  if (!(bin_degrees > 0.0) || !(180.0 / bin_degrees <= static_cast<double>(kMaxTabulated))) return;
+  // elevation_bin's atan2 lies within +-90 degrees, give or take its roundings: its bins, two of
+  // room either side.
+  lowest_ = static_cast<std::int64_t>(std::floor(-90.0 / bin_degrees)) - 2;
+  const auto highest = static_cast<std::int64_t>(std::ceil(90.0 / bin_degrees)) + 2;
+  constexpr double kRadians = 3.14159265358979323846 / 180.0;
+  for (std::int64_t b = lowest_; b <= highest; ++b) {
+    const double degrees = std::clamp(static_cast<double>(b) * bin_degrees, -90.0, 90.0);
+    const double edge = std::sin(degrees * kRadians);
+    edges_.push_back(edges_.empty() ? edge : std::max(edge, edges_.back()));
+  }
+  // Two cells an edge: a point's search starts at most a few edges from its own, except near the
+  // poles, where the edges crowd in sine.
+  first_edge_.resize(2 * edges_.size());
+  cells_per_unit_ = static_cast<double>(first_edge_.size()) / 2.0;
+  for (std::size_t c = 0; c < first_edge_.size(); ++c) {
+    const double start = -1.0 + static_cast<double>(c) / cells_per_unit_;
+    const auto above = std::upper_bound(edges_.begin(), edges_.end(), start);
+    first_edge_[c] = static_cast<std::uint32_t>(above == edges_.begin() ? 0 : above - edges_.begin() - 1);
+  }
+}
+
+std::optional<std::int64_t> ElevationBins::operator()(const Point& p) const {
+  if (edges_.empty()) return elevation_bin(p, bin_degrees_);
+  // s = sin(elevation), off by a few roundings (1e-15) while the squares neither over- nor
+  // underflow; atan2's bin is off by as little. So a sine farther than kEdgeMargin from every
+  // edge's lies in atan2's bin (|d sin| <= |d angle|: the margin in angle is larger still).
+  const double r2 = p.x() * p.x() + p.y() * p.y() + p.z() * p.z();
+  if (!(r2 >= 1e-280 && r2 <= 1e280)) return elevation_bin(p, bin_degrees_);
+  const double s = p.z() / std::sqrt(r2);
+  const double cell = std::clamp((s + 1.0) * cells_per_unit_, 0.0, static_cast<double>(first_edge_.size() - 1));
+  std::size_t e = first_edge_[static_cast<std::size_t>(cell)];
+  while (e > 0 && edges_[e] > s) --e;
+  while (e + 1 < edges_.size() && edges_[e + 1] <= s) ++e;
+  if (e + 1 >= edges_.size() || !(s - edges_[e] > kEdgeMargin) || !(edges_[e + 1] - s > kEdgeMargin)) {
+    return elevation_bin(p, bin_degrees_);
+  }
+  return lowest_ + static_cast<std::int64_t>(e);
+}
+
 std::vector<ElevationBeam> elevation_beams(const std::vector<std::pair<std::int64_t, std::size_t>>& sorted_counts) {
   std::vector<ElevationBeam> beams;
   for (std::size_t k = 0; k < sorted_counts.size();) {
@@ -31,10 +72,11 @@ std::vector<std::int32_t> scan_beam_of_points(const PointList& points, const con
   std::vector<std::int32_t> beam_of(points.size(), -1);
   const double bin = cfg.scan_elevation_bin_degrees;
   if (!(bin > 0.0)) return beam_of;
+  const ElevationBins bins(bin);
   std::vector<std::optional<std::int64_t>> bin_of(points.size());
   std::map<std::int64_t, std::size_t> counts;
   for (std::size_t i = 0; i < points.size(); ++i) {
-    bin_of[i] = elevation_bin(points[i], bin);
+    bin_of[i] = bins(points[i]);
     if (bin_of[i]) ++counts[*bin_of[i]];
   }
   const std::vector<ElevationBeam> beams =

@@ -21,6 +21,34 @@ inline constexpr std::size_t kMinPointsPerBeam = 10;
 // a non-finite point.
 std::optional<std::int64_t> elevation_bin(const Point& p, double bin_degrees);
 
+// elevation_bin of many points, the same bins: the sines of the bins' lower edges tabulated, so
+// that a point's bin is found by comparing its z / |p| with them (a square root, no atan2). A
+// point within kEdgeMargin of an edge, or one whose squares over- or underflow, is binned by
+// elevation_bin itself: the two differ by rounding only, far below that margin. Bins narrower
+// than 180 / kMaxTabulated degrees are not tabulated (all points go to elevation_bin).
+class ElevationBins {
+ public:
+  static constexpr double kEdgeMargin = 1e-9;
+  static constexpr std::int64_t kMaxTabulated = 1 << 16;
+
+  explicit ElevationBins(double bin_degrees);
+
+  std::optional<std::int64_t> operator()(const Point& p) const;
+
+  // Every bin operator() returns lies in [lowest(), lowest() + span()) when tabulated(): dense
+  // counts fit an array of span() entries.
+  bool tabulated() const { return !edges_.empty(); }
+  std::int64_t lowest() const { return lowest_; }
+  std::size_t span() const { return edges_.size(); }
+
+ private:
+  double bin_degrees_ = 0.0;
+  std::int64_t lowest_ = 0;      // the bin whose lower edge is edges_[0]
+  std::vector<double> edges_;    // the sine of bin lowest_ + e's lower edge, clamped to [-1, 1]
+  std::vector<std::uint32_t> first_edge_;  // per cell of s (uniform over [-1, 1]): an edge at or below it
+  double cells_per_unit_ = 0.0;
+};
+
 // A beam: a run of adjacent occupied elevation bins, empty ones either side, holding at least
 // kMinPointsPerBeam points.
 struct ElevationBeam {

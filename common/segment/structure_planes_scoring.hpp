@@ -11,9 +11,13 @@
 
 namespace cloudshape::segment {
 
-// Nodes with their positions, normals and distance limits (band times their spacing) apart.
+// Nodes with their positions, normals and distance limits (band times their spacing) apart, in
+// an order of their own (nearby nodes together: a count does not depend on the order), and per
+// chunk of kChunk of them a box around their positions and their largest limit.
 struct ScoredNodes {
+  static constexpr std::size_t kChunk = 32;
   std::vector<double> x, y, z, nx, ny, nz, limit;
+  std::vector<double> centre_x, centre_y, centre_z, half_x, half_y, half_z, chunk_limit;  // per full chunk
 
   ScoredNodes(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes, double band);
   std::size_t size() const { return x.size(); }

@@ -50,9 +50,20 @@ double finest_in(const PointList& points, const geometry::Bounds& box, parallel:
   // Three times the sampling: 26-neighbour voxels must connect a surface's points where its
   // sampling thins out. The extent bounds a cell index without squares, which underflow for a
   // cloud of 1e-253 (found by fuzzing).
-  return std::max(3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool),
+  return std::max(3.0 * geometry::mean_nearest_neighbour_distance(points, 4000, pool, &box),
                   (box.max - box.min).maxCoeff() / kMaxCellsPerAxis);
 }
+
+double budget_in(const PointList& points, const geometry::Bounds& box, const config::SegmentConfig& cfg,
+                 parallel::ThreadPool* pool) {
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  return std::max(box.diagonal() / std::sqrt(target), finest_in(points, box, pool));
+}
+
+// build_voxel_graph of points within `box` (their bounding box), at least one point.
+NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, double voxel,
+                        std::optional<std::int64_t> max_nodes, const config::SegmentConfig& cfg,
+                        parallel::ThreadPool* pool);
 
 }  // namespace
 
@@ -61,26 +72,34 @@ double finest_voxel(const PointList& points, parallel::ThreadPool* pool) {
 }
 
 double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
-  if (points.empty()) return 0.0;
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
-  const geometry::Bounds box = geometry::bounding_box(points);
-  return std::max(box.diagonal() / std::sqrt(target), finest_in(points, box, pool));
+  return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points), cfg, pool);
 }
 
+// One bounding box for the budget, its resolution bound and the binning.
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
-  return build_voxel_graph(points, budget_voxel(points, cfg, pool), cfg.target_nodes, cfg, pool);
+  if (points.empty()) return build_voxel_graph(points, 0.0, cfg.target_nodes, cfg, pool);
+  const geometry::Bounds box = geometry::bounding_box(points);
+  return build_in(points, box, budget_in(points, box, cfg, pool), cfg.target_nodes, cfg, pool);
 }
 
 NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
                                  const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
-  NeighbourGraph g;
-  g.node_of_point.assign(points.size(), kNoNode);
   if (points.empty()) {
+    NeighbourGraph g;
     g.adjacency_begin.assign(1, 0);
     return g;
   }
-  const geometry::Bounds box = geometry::bounding_box(points);
+  return build_in(points, geometry::bounding_box(points), voxel, max_nodes, cfg, pool);
+}
+
+namespace {
+
+NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, double voxel,
+                        std::optional<std::int64_t> max_nodes, const config::SegmentConfig& cfg,
+                        parallel::ThreadPool* pool) {
+  NeighbourGraph g;
+  g.node_of_point.assign(points.size(), kNoNode);
   const Point origin = box.min;
   // A budget of nodes caps the voxel count (1.3 times it); none: every voxel the points fill (a
   // voxel never finer than finest_voxel fills no more than there are points).
@@ -89,8 +108,9 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
   voxel = std::max(voxel, 1e-300);
 
   using Key = std::uint64_t;
+  // p - origin >= 0 (origin is the points' minimum), so truncation is the floor.
   const auto key_of = [&](const Point& p, double v) {
-    const Eigen::Vector3d c = ((p - origin) / v).array().floor();
+    const Eigen::Vector3d c = (p - origin) / v;
     return (static_cast<Key>(c.x()) << 42) | (static_cast<Key>(c.y()) << 21) | static_cast<Key>(c.z());
   };
   // Node ids in order of first appearance; each point's node kept from the pass that found them.
@@ -160,19 +180,23 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
     ++g.adjacency_begin[b + 1];
   }
   for (std::size_t n = 0; n < nodes; ++n) g.adjacency_begin[n + 1] += g.adjacency_begin[n];
-  g.adjacency.resize(2 * pairs.size());
+  // The rows in pair order first; then read back node by node, each node appended to the rows
+  // of its neighbours: the edges are symmetric, so every row comes out sorted (no sort).
+  std::vector<std::uint32_t> unsorted(2 * pairs.size());
   {
     std::vector<std::uint32_t> next(g.adjacency_begin.begin(), g.adjacency_begin.end() - 1);
     for (const auto& [a, b] : pairs) {
-      g.adjacency[next[a]++] = b;
-      g.adjacency[next[b]++] = a;
+      unsorted[next[a]++] = b;
+      unsorted[next[b]++] = a;
     }
   }
-  parallel::for_blocks(pool, nodes, kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t n = begin; n < end; ++n) {
-      std::sort(g.adjacency.begin() + g.adjacency_begin[n], g.adjacency.begin() + g.adjacency_begin[n + 1]);
+  g.adjacency.resize(unsorted.size());
+  {
+    std::vector<std::uint32_t> next(g.adjacency_begin.begin(), g.adjacency_begin.end() - 1);
+    for (std::uint32_t b = 0; b < nodes; ++b) {
+      for (std::uint32_t e = g.adjacency_begin[b]; e < g.adjacency_begin[b + 1]; ++e) g.adjacency[next[unsorted[e]]++] = b;
     }
-  });
+  }
   fill_spacing(g, voxel, pool);
 
   const std::size_t k = std::min<std::size_t>(g.size(), static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.normal_neighbours)));
@@ -214,5 +238,7 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
   add_edges(g, widen_line_neighbourhoods(g.nodes, linear, line_of, cfg, g.normals, g.curvature));
   return g;
 }
+
+}  // namespace
 
 }  // namespace cloudshape::segment

@@ -9,11 +9,41 @@
 namespace cloudshape::geometry {
 namespace {
 
-TEST(KdTree, KnnMatchesBruteForce) {
-  std::mt19937_64 rng(1);
+// `count` points uniform in the cube [-1, 1]^3, drawn from `rng` (later queries draw on from it).
+PointList cube_points(std::mt19937_64& rng, int count) {
   std::uniform_real_distribution<double> u(-1, 1);
   PointList pts;
-  for (int i = 0; i < 3000; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  for (int i = 0; i < count; ++i) pts.emplace_back(u(rng), u(rng), u(rng));
+  return pts;
+}
+
+TEST(KdTree, AnOwningTreeAnswersAsOneOverTheListItWasMadeFrom) {
+  std::mt19937_64 rng(4);
+  const PointList pts = cube_points(rng, 2000);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const KdTree over(pts);
+  PointList copy = pts;
+  const KdTree owning(std::move(copy));
+  copy.assign(10, Point::Zero());  // the caller's list is free again: the tree kept its own
+  ASSERT_EQ(owning.points().size(), pts.size());
+  std::vector<std::uint32_t> a, b;
+  std::vector<double> da, db;
+  for (int q = 0; q < 50; ++q) {
+    const Point query(u(rng), u(rng), u(rng));
+    over.knn(query, 14, a, &da);
+    owning.knn(query, 14, b, &db);
+    EXPECT_EQ(a, b);
+    EXPECT_EQ(da, db);
+    over.radius(query, 0.2, a);
+    owning.radius(query, 0.2, b);
+    EXPECT_EQ(a, b);  // the same order too: RANSAC draws from it by position
+  }
+}
+
+TEST(KdTree, KnnMatchesBruteForce) {
+  std::mt19937_64 rng(1);
+  const PointList pts = cube_points(rng, 3000);
+  std::uniform_real_distribution<double> u(-1, 1);
   const KdTree tree(pts);
   std::vector<std::uint32_t> idx;
   std::vector<double> d2;

@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
+#include "geometry/kdtree.hpp"
 #include "geometry/voxel_grid.hpp"
 
 namespace cloudshape::geometry {
@@ -64,6 +66,18 @@ TEST(VoxelGrid, CountOfOccupiedVoxelsIsTheDownsampledSize) {
 TEST(Resolution, MeanNearestNeighbourOfARegularGrid) {
   EXPECT_NEAR(mean_nearest_neighbour_distance(grid(30, 0.25)), 0.25, 1e-12);
   EXPECT_EQ(mean_nearest_neighbour_distance(PointList{Point(0, 0, 0)}), 0.0);
+}
+
+TEST(Resolution, ATreeOverThePointsGivesTheListsValueExactly) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::size_t n : {2u, 500u, 9000u, 60000u}) {
+    PointList pts;
+    for (std::size_t i = 0; i < n; ++i) pts.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+    const KdTree tree(pts);
+    EXPECT_EQ(mean_nearest_neighbour_distance(tree), mean_nearest_neighbour_distance(pts)) << n;
+    EXPECT_EQ(mean_nearest_neighbour_distance(tree, 100), mean_nearest_neighbour_distance(pts, 100)) << n;
+  }
 }
 
 }  // namespace

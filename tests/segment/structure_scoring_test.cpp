@@ -2,6 +2,7 @@
 // Eigen test accepts (also nodes exactly on the limits), and stops only counts that cannot win.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -74,6 +75,44 @@ TEST(StructureScoring, CountsAsIsInlierDoes) {
   EXPECT_GT(total, 1000u);  // the test holds inliers, not only outliers
   EXPECT_GT(boundary_cases, 1000u);
   EXPECT_GT(stopped, 50u);  // counts that could not win did stop early
+}
+
+// Chunks of nearby nodes far from the plane are skipped whole; a chunk lying exactly on its
+// limits, or just inside, or just beyond them, is counted as the per-node test counts it.
+TEST(StructureScoring, ChunksNearTheirLimitCountAsIsInlierDoes) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double band = 3.0;
+  const double min_cos = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    geometry::Plane p;
+    // Half the planes along an axis: a cluster's box is then as flat as the cluster.
+    p.normal = trial % 2 ? Eigen::Vector3d(u(rng), u(rng), u(rng)).normalized()
+                         : Eigen::Vector3d(Eigen::Vector3d::Unit(trial / 2 % 3)) * (trial % 4 ? 1.0 : -1.0);
+    p.offset = 100.0 * u(rng);
+    const Eigen::Vector3d a = p.normal.unitOrthogonal(), b = p.normal.cross(a);
+    NeighbourGraph g;
+    std::vector<std::uint32_t> nodes;
+    // Flat clusters parallel to the plane, each at one height: on the limit, a hair inside or
+    // beyond it, or far away; spacing 0.1, so the limit is 0.3.
+    for (int cluster = 0; cluster < 40; ++cluster) {
+      const double height = std::array<double, 5>{0.3, 0.3 * (1 - 1e-15), 0.3 * (1 + 1e-15), 5.0, -40.0}[cluster % 5];
+      const Point centre = -p.offset * p.normal + 200.0 * u(rng) * a + 200.0 * u(rng) * b;
+      for (int k = 0; k < 64; ++k) {
+        Point x = centre + u(rng) * a + u(rng) * b;
+        x += (height - p.signed_distance(x)) * p.normal;
+        g.nodes.push_back(x);
+        g.normals.push_back(p.normal);
+        // On the limit as Eigen computes the distance, for the first kind of cluster.
+        g.spacing.push_back(cluster % 5 == 0 ? std::abs(p.signed_distance(x)) / band : 0.1);
+        nodes.push_back(static_cast<std::uint32_t>(nodes.size()));
+      }
+    }
+    const ScoredNodes scored(g, nodes, band);
+    const std::size_t expected = eigen_count(g, nodes, p, band, min_cos);
+    EXPECT_EQ(count_plane_inliers(scored, p, min_cos), expected) << "trial " << trial;
+    EXPECT_GE(expected, 8u * 64u) << "the clusters on and inside the limit count";
+  }
 }
 
 }  // namespace

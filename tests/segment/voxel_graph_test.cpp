@@ -8,9 +8,12 @@
 #include <cmath>
 #include <random>
 
+#include <Eigen/Eigenvalues>
+
 #include "config/stage_configs.hpp"
 #include "geometry/pca.hpp"
 #include "geometry/voxel_grid.hpp"
+#include "segment/detail/graph_moments.hpp"
 #include "segment/neighbour_graph.hpp"
 
 namespace cloudshape::segment {
@@ -80,6 +83,39 @@ TEST(SegmentVoxelGraph, NormalsAreThoseOfTheNearestNodes) {
       EXPECT_GT(std::abs(pca.eigenvectors.col(0).dot(g.normals[n])), 1.0 - 1e-6) << "node " << n;
     }
   }
+}
+
+// along_a_line answers as the eigenvalues alone do (its shortcut for a surface changes no
+// answer): neighbourhoods from a line to a plane to a blob, spreads around the threshold.
+TEST(SegmentVoxelGraph, LineTestAsTheEigenvaluesSay) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  constexpr double kLine = 0.1;
+  std::size_t on_line = 0, across = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    // Axis spreads 1, a, b: a around kLine on most trials, b up to a.
+    const double a = trial % 3 == 0 ? unit(rng) : kLine * (0.5 + unit(rng));
+    const double b = a * unit(rng);
+    const Eigen::Matrix3d rot = Eigen::Quaterniond::UnitRandom().toRotationMatrix();
+    const Point centre(gauss(rng) * 100.0, gauss(rng) * 100.0, gauss(rng) * 100.0);
+    detail::Moments m;
+    m.origin = centre;
+    const int count = 3 + trial % 20;
+    for (int i = 0; i < count; ++i) m.add(centre + rot * Eigen::Vector3d(gauss(rng), a * gauss(rng), b * gauss(rng)));
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+    eig.computeDirect(m.covariance(), Eigen::EigenvaluesOnly);
+    const double major = eig.eigenvalues()(2);
+    const double spread = major > 0.0 ? std::sqrt(std::max(0.0, eig.eigenvalues()(1)) / major) : 0.0;
+    Eigen::Vector3d direction = Eigen::Vector3d::Zero();
+    const bool line = detail::along_a_line(m, kLine, direction);
+    ASSERT_EQ(line, spread < kLine) << trial << " spread " << spread;
+    on_line += line ? 1 : 0;
+    across += line ? 0 : 1;
+  }
+  // Both answers were exercised, many times.
+  EXPECT_GT(on_line, 2000u);
+  EXPECT_GT(across, 2000u);
 }
 
 TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {

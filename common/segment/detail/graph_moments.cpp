@@ -24,9 +24,27 @@ void normal_of(const Moments& m, Eigen::Vector3d& normal, double& curvature, dou
   }
 }
 
+namespace {
+
+// True only when the spread (middle over largest eigenvalue, square-rooted) is surely at least
+// `line`, from the trace and the principal minors alone: with eigenvalues l0 <= l1 <= l2 (l0 at
+// worst a rounding below 0), e2 = l0 l1 + l0 l2 + l1 l2 <= 3 l1 l2 and l2 <= trace, so
+// l1 / l2 >= e2 / (3 trace^2). Asking twice line^2 of that bound leaves the solver's rounding
+// (far below a factor of two on l1 / l2 this large) no say: a surface's neighbourhood skips
+// the eigenvalues.
+bool spreads_across(const Eigen::Matrix3d& c, double line) {
+  const double trace = c(0, 0) + c(1, 1) + c(2, 2);
+  const double e2 = c(0, 0) * c(1, 1) - c(0, 1) * c(0, 1) + c(0, 0) * c(2, 2) - c(0, 2) * c(0, 2) +
+                    c(1, 1) * c(2, 2) - c(1, 2) * c(1, 2);
+  return trace > 0.0 && e2 >= 6.0 * line * line * trace * trace;
+}
+
+}  // namespace
+
 bool along_a_line(const Moments& m, double line, Eigen::Vector3d& direction) {
   if (m.count < 3) return false;
   const Eigen::Matrix3d cov = m.covariance();
+  if (spreads_across(cov, line)) return false;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(cov, Eigen::EigenvaluesOnly);
   const double major = eig.eigenvalues()(2);
