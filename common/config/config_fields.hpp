@@ -35,6 +35,7 @@ void visit_fields(PreprocessConfig& c, F&& f) {
 template <class F>
 void visit_fields(SegmentConfig& c, F&& f) {
   f("target_nodes", c.target_nodes);
+  f("voxel_target_nodes", c.voxel_target_nodes);
   f("depth_jump", c.depth_jump);
   f("normal_radius", c.normal_radius);
   f("normal_neighbours", c.normal_neighbours);

@@ -89,7 +89,8 @@ struct ClassifyConfig {
 // Scene segmentation (common/segment): the cloud as a graph of nodes (pixels of an organized
 // cloud, voxels otherwise), structure planes out, smooth patches joined across convex junctions.
 struct SegmentConfig {
-  std::int64_t target_nodes = 40000;       // the graph has about this many nodes (pixel stride or voxel edge chosen for it)
+  std::int64_t target_nodes = 40000;       // organized: the graph has about this many nodes (pixel stride chosen for it)
+  std::int64_t voxel_target_nodes = 20000; // unorganized: a surface occupying more cells than this is gridded coarser, to about this many
   double depth_jump = 0.02;                // organized: neighbours whose ranges differ by more than this share of the range are not connected
   std::int64_t normal_radius = 2;          // organized: half-width of a node's normal window, in nodes
   std::int64_t normal_neighbours = 16;     // unorganized: nodes in a node's normal neighbourhood

@@ -45,8 +45,9 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
 double finest_voxel(const PointList& points, parallel::ThreadPool* pool = nullptr);
 
 // The voxel edge build_voxel_graph starts from: the bounding box's diagonal over the square root
-// of cfg.target_nodes (a surface fills voxels with the inverse square of the edge), never finer
-// than finest_voxel.
+// of cfg.target_nodes, never finer than finest_voxel, grown by the square root of the occupied
+// voxels' excess over cfg.voxel_target_nodes (a surface fills voxels with the inverse square of
+// the edge).
 double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
 
 // Any cloud: voxels of budget_voxel's edge, grown by a quarter at a time while more than 1.3

@@ -56,8 +56,16 @@ double finest_in(const PointList& points, const geometry::Bounds& box, parallel:
 
 double budget_in(const PointList& points, const geometry::Bounds& box, const config::SegmentConfig& cfg,
                  parallel::ThreadPool* pool) {
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
-  return std::max(box.diagonal() / std::sqrt(target), finest_in(points, box, pool));
+  // Never finer than the scene-wide budget (target_nodes over the bounding box), and coarser only
+  // where the surface itself holds more than voxel_target_nodes cells at its finest voxel: a
+  // densely sampled solid gets fewer nodes, a scene's empty space (a small solid far from the
+  // rest, a lidar's sphere among walls) coarsens nothing (remainder_graph scales by nodes kept too).
+  const double finest = finest_in(points, box, pool);
+  const double nodes = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
+  const double scene = std::max(box.diagonal() / std::sqrt(nodes), finest);
+  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.voxel_target_nodes));
+  const double occupied = static_cast<double>(geometry::count_occupied_voxels(points, scene, &box));
+  return scene * std::max(1.0, std::sqrt(occupied / target));
 }
 
 // build_voxel_graph of points within `box` (their bounding box), at least one point.
@@ -75,7 +83,8 @@ double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, p
   return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points), cfg, pool);
 }
 
-// One bounding box for the budget, its resolution bound and the binning.
+// One bounding box for the budget, its resolution bound and the binning; target_nodes stays the
+// cap (budget_in's voxel holds about voxel_target_nodes cells, or fewer).
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
   if (points.empty()) return build_voxel_graph(points, 0.0, cfg.target_nodes, cfg, pool);

@@ -120,12 +120,12 @@ TEST(SegmentVoxelGraph, LineTestAsTheEigenvaluesSay) {
 
 TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
   config::SegmentConfig cfg;
-  cfg.target_nodes = 50;  // a budget this small would grow any voxel fine enough for 30 000 points
+  cfg.voxel_target_nodes = 50;  // a budget this small would grow any voxel fine enough for 30 000 points
   const PointList pts = tilted_box(30000, 3);
   const double voxel = 2.0 * finest_voxel(pts);
   ASSERT_GT(voxel, 0.0);
   const NeighbourGraph g = build_voxel_graph(pts, voxel, std::nullopt, cfg);
-  ASSERT_GT(static_cast<double>(g.size()), 1.3 * static_cast<double>(cfg.target_nodes));
+  ASSERT_GT(static_cast<double>(g.size()), 1.3 * static_cast<double>(cfg.voxel_target_nodes));
   // Two points share a node exactly when they share a voxel of that edge from the box's corner.
   const geometry::Bounds box = geometry::bounding_box(pts);
   std::map<std::array<std::int64_t, 3>, std::uint32_t> node_of_voxel;
@@ -138,8 +138,8 @@ TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
   }
   EXPECT_EQ(node_of_voxel.size(), g.size());
   // With the budget, the same voxel grows until at most 1.3 times the budget are occupied.
-  EXPECT_LE(static_cast<double>(build_voxel_graph(pts, voxel, cfg.target_nodes, cfg).size()),
-            1.3 * static_cast<double>(cfg.target_nodes));
+  EXPECT_LE(static_cast<double>(build_voxel_graph(pts, voxel, cfg.voxel_target_nodes, cfg).size()),
+            1.3 * static_cast<double>(cfg.voxel_target_nodes));
 }
 
 }  // namespace
