@@ -33,6 +33,16 @@ bool segments_cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Ei
 
 }  // namespace
 
+Polygon2 regular_polygon(int sides, double circumradius, double first_angle) {
+  constexpr double kTwoPi = 6.28318530717958647692;
+  Polygon2 out;
+  for (int k = 0; k < sides; ++k) {
+    const double t = first_angle + kTwoPi * k / sides;
+    out.emplace_back(circumradius * std::cos(t), circumradius * std::sin(t));
+  }
+  return out;
+}
+
 double signed_area(const Polygon2& polygon) {
   double twice = 0.0;
   for (std::size_t i = 0; i < polygon.size(); ++i) twice += cross(polygon[i], polygon[(i + 1) % polygon.size()]);

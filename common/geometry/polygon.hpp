@@ -11,6 +11,10 @@ namespace cloudshape::geometry {
 
 using Polygon2 = std::vector<Eigen::Vector2d>;
 
+// The regular polygon of `sides` corners on the circle of `circumradius` about the origin,
+// counter-clockwise, the first at `first_angle` (radians) from the x axis.
+Polygon2 regular_polygon(int sides, double circumradius, double first_angle = 0.0);
+
 // Positive for a counter-clockwise polygon.
 double signed_area(const Polygon2& polygon);
 

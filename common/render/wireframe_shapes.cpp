@@ -1,5 +1,7 @@
 #include "render/wireframe_shapes.hpp"
 
+#include "geometry/polygon.hpp"
+
 #include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
@@ -34,15 +36,6 @@ Polyline circle(const Eigen::Vector3d& center, const Eigen::Vector3d& u, const E
     c.points.push_back(center + radius * (std::cos(t) * u + std::sin(t) * v));
   }
   return c;
-}
-
-std::vector<Eigen::Vector2d> regular_polygon(int sides, double circumradius, double first_angle) {
-  std::vector<Eigen::Vector2d> out;
-  for (int k = 0; k < sides; ++k) {
-    const double t = first_angle + 2.0 * kPi * k / sides;
-    out.emplace_back(circumradius * std::cos(t), circumradius * std::sin(t));
-  }
-  return out;
 }
 
 }  // namespace
@@ -106,7 +99,7 @@ Wireframe pentagonal_prism_wireframe(const pipeline::ObjectResult& o, const Eige
   if (!all_lengths({side, h})) return {};
   // axes[1] is the outward normal of one side face, so the corners sit 36 degrees either side.
   const double circumradius = side / (2.0 * std::sin(kPi / 5.0));
-  return extrusion(o.center, o.axes, regular_polygon(5, circumradius, kPi / 5.0), h);
+  return extrusion(o.center, o.axes, geometry::regular_polygon(5, circumradius, kPi / 5.0), h);
 }
 
 Wireframe tetrahedron_wireframe(const pipeline::ObjectResult& o, const Eigen::Vector3d&) {

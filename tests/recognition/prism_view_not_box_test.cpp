@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "geometry/polygon.hpp"
 #include "new_shapes_support.hpp"
 #include "synth/pose.hpp"
 
@@ -13,15 +14,6 @@ namespace cloudshape::newshapes {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-geometry::Polygon2 regular_polygon(int sides, double circumradius) {
-  geometry::Polygon2 p;
-  for (int k = 0; k < sides; ++k) {
-    const double a = 2.0 * kPi * k / sides;
-    p.emplace_back(circumradius * std::cos(a), circumradius * std::sin(a));
-  }
-  return p;
-}
 
 // The camera 3 sizes away, in the cross-section's direction `toward`, raised `elevation` degrees
 // towards a cap.
@@ -55,7 +47,7 @@ TEST(PrismView, SidesAt120DegreesAreNotABox) {
   for (std::uint64_t seed = 500; seed < 504; ++seed) {
     for (double elevation : {30.0, 50.0}) {
       const Eigen::Vector2d toward = seed % 2 == 0 ? Eigen::Vector2d(1, 0) : side_midpoint;
-      const View v = view_from(regular_polygon(6, 50.0), toward, 40.0, seed, elevation);
+      const View v = view_from(geometry::regular_polygon(6, 50.0), toward, 40.0, seed, elevation);
       EXPECT_NE(v.result.shape, "box") << "seed " << seed << ", elevation " << elevation;
     }
   }
