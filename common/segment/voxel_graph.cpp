@@ -56,10 +56,11 @@ double finest_in(const PointList& points, const geometry::Bounds& box, parallel:
 
 double budget_in(const PointList& points, const geometry::Bounds& box, const config::SegmentConfig& cfg,
                  parallel::ThreadPool* pool) {
-  // Never finer than the scene-wide budget (target_nodes over the bounding box), and coarser only
-  // where the surface itself holds more than voxel_target_nodes cells at its finest voxel: a
-  // densely sampled solid gets fewer nodes, a scene's empty space (a small solid far from the
-  // rest, a lidar's sphere among walls) coarsens nothing (remainder_graph scales by nodes kept too).
+  // Never finer than the scene-wide voxel (target_nodes over the bounding box, at least
+  // finest_in), and coarser only where the surface holds more than voxel_target_nodes cells at
+  // that voxel: a densely sampled solid gets fewer nodes, a scene's empty space (a small solid far
+  // from the rest, a lidar's sphere among walls) coarsens nothing (remainder_graph scales by nodes
+  // kept too).
   const double finest = finest_in(points, box, pool);
   const double nodes = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
   const double scene = std::max(box.diagonal() / std::sqrt(nodes), finest);
