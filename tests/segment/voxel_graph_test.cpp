@@ -120,12 +120,12 @@ TEST(SegmentVoxelGraph, LineTestAsTheEigenvaluesSay) {
 
 TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
   config::SegmentConfig cfg;
-  cfg.voxel_target_nodes = 50;  // a budget this small would grow any voxel fine enough for 30 000 points
+  cfg.target_nodes = 50;  // a budget this small would grow any voxel fine enough for 30 000 points
   const PointList pts = tilted_box(30000, 3);
   const double voxel = 2.0 * finest_voxel(pts);
   ASSERT_GT(voxel, 0.0);
   const NeighbourGraph g = build_voxel_graph(pts, voxel, std::nullopt, cfg);
-  ASSERT_GT(static_cast<double>(g.size()), 1.3 * static_cast<double>(cfg.voxel_target_nodes));
+  ASSERT_GT(static_cast<double>(g.size()), 1.3 * static_cast<double>(cfg.target_nodes));
   // Two points share a node exactly when they share a voxel of that edge from the box's corner.
   const geometry::Bounds box = geometry::bounding_box(pts);
   std::map<std::array<std::int64_t, 3>, std::uint32_t> node_of_voxel;
@@ -138,8 +138,27 @@ TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
   }
   EXPECT_EQ(node_of_voxel.size(), g.size());
   // With the budget, the same voxel grows until at most 1.3 times the budget are occupied.
-  EXPECT_LE(static_cast<double>(build_voxel_graph(pts, voxel, cfg.voxel_target_nodes, cfg).size()),
-            1.3 * static_cast<double>(cfg.voxel_target_nodes));
+  EXPECT_LE(static_cast<double>(build_voxel_graph(pts, voxel, cfg.target_nodes, cfg).size()),
+            1.3 * static_cast<double>(cfg.target_nodes));
+}
+
+// The unorganized budget coarsens a densely sampled surface to about voxel_target_nodes nodes
+// and leaves a sparse cloud at the scene-wide voxel (what an unlimited voxel_target_nodes gives).
+TEST(SegmentVoxelGraph, OnlyADenseSurfaceIsGriddedCoarser) {
+  config::SegmentConfig cfg;
+  config::SegmentConfig unlimited = cfg;
+  unlimited.voxel_target_nodes = std::int64_t{1} << 40;
+  const PointList dense = tilted_box(100000, 5);
+  const double scene = budget_voxel(dense, unlimited);
+  ASSERT_GT(scene, 0.0);
+  ASSERT_GT(static_cast<double>(geometry::count_occupied_voxels(dense, scene)),
+            1.3 * static_cast<double>(cfg.voxel_target_nodes));  // the case the budget is for
+  EXPECT_GT(budget_voxel(dense, cfg), 1.1 * scene);
+  // A surface fills cells with the inverse square of the edge: about the budget, within 30%.
+  const double nodes = static_cast<double>(build_voxel_graph(dense, cfg).size());
+  EXPECT_NEAR(nodes, static_cast<double>(cfg.voxel_target_nodes), 0.3 * static_cast<double>(cfg.voxel_target_nodes));
+  const PointList sparse = tilted_box(5000, 6);
+  EXPECT_EQ(budget_voxel(sparse, cfg), budget_voxel(sparse, unlimited));
 }
 
 }  // namespace
