@@ -81,9 +81,16 @@ ConditionReport run_condition(const std::string& name, const AccuracyOptions& op
       std::fprintf(stderr, "\ncloudshape-bench: %s: recognize_cloud threw: %s\n",
                    cloud.source.c_str(), e.what());
     }
-    if (!options.save_dir.empty())
-      io::write_pcd(options.save_dir + "/" + cloud.source + ".pcd", cloud.points,
-                    io::PcdEncoding::binary, true);
+    if (!options.save_dir.empty()) {
+      const std::string path = options.save_dir + "/" + cloud.source + ".pcd";
+      try {
+        io::write_pcd(path, cloud.points, io::PcdEncoding::binary, true);
+      } catch (const std::exception& e) {
+        // The cloud is still scored: a full disk costs the copy, not the measurement.
+        std::fprintf(stderr, "\ncloudshape-bench: --save-clouds: %s not written: %s\n", path.c_str(), e.what());
+        ++report.unsaved;
+      }
+    }
     if (options.per_cloud) print_cloud_line(cloud, result);
     score_cloud(cloud, result, report.tallies);
     if (name == "real") report.samples.push_back(sample_row(cloud, result));
@@ -126,6 +133,12 @@ int run_accuracy(const AccuracyOptions& options, const config::PipelineConfig& c
     for (const auto& r : reports) std::printf("%-12s %s\n", r.name.c_str(), r.description.c_str());
     std::printf("\n");
     print_accuracy_table(reports, stdout);
+  }
+  std::size_t unsaved = 0;
+  for (const auto& r : reports) unsaved += r.unsaved;
+  if (unsaved > 0) {
+    std::fprintf(stderr, "cloudshape-bench: --save-clouds: %zu clouds not written (scored all the same)\n", unsaved);
+    return 1;
   }
   return 0;
 }

@@ -32,6 +32,7 @@ struct ConditionReport {
   double seconds = 0.0;                  // wall time: generation plus recognition
   std::map<std::string, Tally> tallies;  // by truth shape
   std::vector<SampleRow> samples;        // real condition only
+  std::size_t unsaved = 0;               // --save-clouds copies that could not be written
 };
 
 void print_accuracy_table(const std::vector<ConditionReport>& reports, std::FILE* out);

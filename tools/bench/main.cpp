@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -164,7 +165,7 @@ int main(int argc, char** argv) {
   app.add_flag("--per-cloud", per_cloud,
                "--accuracy: one line per cloud on stderr (truths, results, how it was made)");
   app.add_option("--save-clouds", save_dir,
-                 "--accuracy: also write every cloud to DIR/<condition>-<shape>-<i>.pcd");
+                 "--accuracy: also write every cloud to DIR/<condition>-<shape>-<i>.pcd (DIR is made if missing)");
   cs::bench::SceneOptions scenes;
   app.add_option("--scenes", scenes.dir,
                  "score the labelled scenes (.pcd with a label field) in DIR instead")
@@ -224,6 +225,16 @@ int main(int argc, char** argv) {
     if (count <= 0 || max_points == 0) {
       std::fprintf(stderr, "cloudshape-bench: --count and --max-points must be positive\n");
       return 2;
+    }
+    if (!save_dir.empty()) {
+      // Made before the first cloud so that a bad path fails at once, not after the run.
+      std::error_code ec;
+      std::filesystem::create_directories(save_dir, ec);
+      if (ec || !std::filesystem::is_directory(save_dir)) {
+        std::fprintf(stderr, "cloudshape-bench: --save-clouds: '%s' cannot be made a directory: %s\n",
+                     save_dir.c_str(), ec ? ec.message().c_str() : "a file of that name exists");
+        return 2;
+      }
     }
     cs::bench::AccuracyOptions options;
     options.suite.count = count;
