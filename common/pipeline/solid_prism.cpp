@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 
 #include "geometry/convex_hull.hpp"
@@ -27,6 +28,7 @@ struct SideRun {
   double weight = 0.0;  // points behind the line
   bool seen = true;     // a side face's; false for a side only a cap's border shows
   double hull_area = 0.0;  // of its points in the plane of the side and the axis
+  std::vector<Eigen::Vector2d> border;  // an unseen side's: the cap's border points its line is fitted to
   Eigen::Vector2d tangent() const { return {-n.y(), n.x()}; }
   Eigen::Vector2d start() const { return d * n + t_lo * tangent(); }
   Eigen::Vector2d end() const { return d * n + t_hi * tangent(); }
@@ -57,23 +59,26 @@ bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
 }
 
 // Axis hypotheses: every face's normal (a cap) and every two faces' common perpendicular (two
-// sides); the one whose sides and caps hold most points wins. At least three sides are needed
-// for an outline, and more than the caps alone.
-std::optional<AxisChoice> choose_axis(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
+// sides). Three sides give an outline of their own: the hypothesis whose sides and caps hold most
+// points is tried first. With fewer sides only a cap can (its traced border, ring_from_cap), so
+// each face's normal with one or two sides follows, most points first: a view of a cap and one
+// side has two such readings (either face the cap), and the outline decides between them.
+std::vector<AxisChoice> choose_axes(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
   const config::SolveConfig& cfg = in.cfg;
   const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
   const double cos_parallel = std::cos(cfg.parallel_degrees * kPi / 180.0);
-  std::vector<Eigen::Vector3d> hypotheses;
+  std::vector<std::pair<Eigen::Vector3d, bool>> hypotheses;  // (axis, along a face's normal)
   const std::size_t n = std::min<std::size_t>(faces.size(), 16);
   for (std::size_t i = 0; i < n; ++i) {
-    hypotheses.push_back(faces[i]->plane.normal);
+    hypotheses.emplace_back(faces[i]->plane.normal, true);
     for (std::size_t j = i + 1; j < n; ++j) {
       const Eigen::Vector3d c = faces[i]->plane.normal.cross(faces[j]->plane.normal);
-      if (c.norm() > sin_perp) hypotheses.push_back(c.normalized());
+      if (c.norm() > sin_perp) hypotheses.emplace_back(c.normalized(), false);
     }
   }
   std::optional<AxisChoice> best;
-  for (const Eigen::Vector3d& a : hypotheses) {
+  std::vector<AxisChoice> from_cap;
+  for (const auto& [a, along_face] : hypotheses) {
     AxisChoice c;
     c.axis = a;
     for (const DetectedPlane* f : faces) {
@@ -83,12 +88,18 @@ std::optional<AxisChoice> choose_axis(const SolveInput& in, const std::vector<co
       else continue;
       c.points += f->inliers.size();
     }
-    if (c.sides.size() < 3) continue;
-    if (!best || c.points > best->points) {
-      if (caps_at_ends(in, c)) best = std::move(c);
+    if (c.sides.size() >= 3) {
+      if ((!best || c.points > best->points) && caps_at_ends(in, c)) best = std::move(c);
+    } else if (along_face && !c.sides.empty() && caps_at_ends(in, c)) {
+      from_cap.push_back(std::move(c));
     }
   }
-  return best;
+  std::stable_sort(from_cap.begin(), from_cap.end(),
+                   [](const AxisChoice& a, const AxisChoice& b) { return a.points > b.points; });
+  std::vector<AxisChoice> out;
+  if (best) out.push_back(std::move(*best));
+  out.insert(out.end(), std::make_move_iterator(from_cap.begin()), std::make_move_iterator(from_cap.end()));
+  return out;
 }
 
 // The side face's stretches in the cross-section: its points split where they leave a gap (two
@@ -251,8 +262,9 @@ bool is_rectangle(const geometry::Polygon2& p, double degrees) {
 }
 
 // Total least-squares line through points, as a side: normal turned to `outward`.
+constexpr std::size_t kMinLinePoints = 5;
 std::optional<SideRun> fit_line(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& outward) {
-  if (pts.size() < 5) return std::nullopt;
+  if (pts.size() < kMinLinePoints) return std::nullopt;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& p : pts) mean += p / static_cast<double>(pts.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
@@ -264,6 +276,45 @@ std::optional<SideRun> fit_line(const std::vector<Eigen::Vector2d>& pts, const E
   r.d = r.n.dot(mean);
   r.weight = static_cast<double>(pts.size());
   return r;
+}
+
+// Root-mean-square distance of points from a side's line.
+double rms_off_line(const std::vector<Eigen::Vector2d>& pts, const SideRun& r) {
+  double sum = 0.0;
+  for (const auto& p : pts) sum += (p.dot(r.n) - r.d) * (p.dot(r.n) - r.d);
+  return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(1, pts.size())));
+}
+
+// The traced outline bends where the cap's border is ragged, cutting one hidden side into
+// several: two neighbouring sides no face shows whose border points lie on one line, within half
+// an outline cell (the grid's own rounding) in the root mean square, are one side. The closest
+// such pair joins first, until none is left.
+std::vector<SideRun> merge_unseen_runs(std::vector<SideRun> ring, double cell) {
+  while (ring.size() > 3) {
+    std::size_t best = ring.size();
+    double best_rms = 0.5 * cell;
+    std::optional<SideRun> joined;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const std::size_t j = (i + 1) % ring.size();
+      if (ring[i].seen || ring[j].seen || ring[i].weight <= 0.0 || ring[j].weight <= 0.0) continue;
+      std::vector<Eigen::Vector2d> pts = ring[i].border;
+      pts.insert(pts.end(), ring[j].border.begin(), ring[j].border.end());
+      auto line = fit_line(pts, ring[i].n + ring[j].n);
+      if (!line) continue;
+      const double rms = rms_off_line(pts, *line);
+      if (!(rms <= best_rms)) continue;
+      line->seen = false;
+      line->t_lo = ring[i].start().dot(line->tangent());
+      line->t_hi = ring[j].end().dot(line->tangent());
+      line->border = std::move(pts);
+      best = i, best_rms = rms, joined = std::move(line);
+    }
+    if (best == ring.size()) break;
+    const std::size_t j = (best + 1) % ring.size();
+    ring[best] = std::move(*joined);
+    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(j));
+  }
+  return ring;
 }
 
 // The outline from a cap (a single view shows one whole: nothing of a right prism stands above
@@ -312,22 +363,28 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
       r.d = outward.dot(a);
       line = r;
     }
+    line->border = std::move(near);
     line->seen = false;
     line->t_lo = a.dot(line->tangent());
     line->t_hi = b.dot(line->tangent());
     ring.push_back(*line);
   }
   // The grid rounds corners into short edges of their own: a side no face shows that is shorter
-  // than a few cells between its neighbours is such a cut, and its neighbours meet instead.
+  // than a few cells between its neighbours, or that no border points line while its neighbours
+  // meet within its length of it (the traced outline's chord across a rounded corner; a plus
+  // sign's arm ends between parallel sides), is such a cut, and its neighbours meet instead.
   for (bool cut = true; cut && ring.size() > 3;) {
     cut = false;
     std::size_t shortest = ring.size();
-    double shortest_len = 3.0 * cell;
+    double shortest_len = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < ring.size(); ++k) {
       if (ring[k].seen) continue;
       const auto a = intersect(ring[(k + ring.size() - 1) % ring.size()], ring[k]);
       const auto b = intersect(ring[k], ring[(k + 1) % ring.size()]);
       const double len = a && b ? (*b - *a).norm() : 0.0;
+      const auto meet = intersect(ring[(k + ring.size() - 1) % ring.size()], ring[(k + 1) % ring.size()]);
+      const bool unsupported = ring[k].weight <= 0.0 && a && b && meet && (*meet - 0.5 * (*a + *b)).norm() <= len;
+      if (!(len < 3.0 * cell) && !unsupported) continue;
       if (len < shortest_len) shortest = k, shortest_len = len;
     }
     if (shortest < ring.size()) {
@@ -335,32 +392,28 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
       cut = true;
     }
   }
-  return ring;
+  return merge_unseen_runs(std::move(ring), cell);
 }
 
-}  // namespace
-
-std::optional<FittedSolid> fit_prism(const SolveInput& in) {
-  const auto faces = detail::faces_by_size(in.planes);
-  const auto choice = choose_axis(in, faces);
-  if (!choice) return std::nullopt;
-  const Eigen::Vector3d axis = detail::extrusion_axis(choice->sides, choice->caps, choice->axis);
+// The prism along one axis hypothesis, or nothing when its outline or faces are no prism's.
+std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoice& choice) {
+  const Eigen::Vector3d axis = detail::extrusion_axis(choice.sides, choice.caps, choice.axis);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
 
   std::vector<Eigen::Vector2d> cap_points;
-  for (const DetectedPlane* f : choice->caps)
+  for (const DetectedPlane* f : choice.caps)
     for (std::uint32_t i : f->inliers) cap_points.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
   std::vector<SideRun> runs;
-  for (const DetectedPlane* f : choice->sides)
-    for (const SideRun& r : side_runs(in, *f, u, v, cap_points, choice->caps)) runs.push_back(r);
+  for (const DetectedPlane* f : choice.sides)
+    for (const SideRun& r : side_runs(in, *f, u, v, cap_points, choice.caps)) runs.push_back(r);
   // Every side seen: the sides' own stretches, ordered around. Else a cap's outline, with the
   // sides seen where they are (a single view); at least one side besides the cap.
   auto chained = chain_runs(runs, in.cfg.prism_corner_gap * in.resolution);
   bool from_cap = false;
-  if (!chained && !choice->caps.empty()) {
+  if (!chained && !choice.caps.empty()) {
     std::size_t matched = 0;
-    chained = ring_from_cap(in, *choice->caps.front(), u, v, runs, matched);
+    chained = ring_from_cap(in, *choice.caps.front(), u, v, runs, matched);
     if (matched == 0) return std::nullopt;
     from_cap = true;
   }
@@ -379,11 +432,21 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   // Corner k joins side k and side k+1: the polygon's edge k+1 runs from corner k to k+1.
   if (polygon.size() < 3 || !(geometry::signed_area(polygon) > 0.0) || !geometry::is_simple(polygon))
     return std::nullopt;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
+  // A cap's border is ragged and notched where something hid it: a concave corner between two
+  // sides only that border shows is no evidence of the cross-section.
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
     if (std::abs(turn_degrees(polygon, i)) < in.cfg.prism_min_turn_degrees) return std::nullopt;
+    if (turn_degrees(polygon, i) < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) return std::nullopt;
+  }
   if (is_rectangle(polygon, in.cfg.parallel_degrees)) return std::nullopt;
   const bool regular = equal_sides_and_turns(polygon, in.cfg.regular_tolerance, in.cfg.parallel_degrees);
   if (regular && polygon.size() == 5) return std::nullopt;
+  // Sides only a cap's border shows are placed less exactly (as in merge_collinear): a pentagon
+  // regular within twice the tolerance is left to the pentagonal prism, which fits it as one.
+  const bool guessed = std::any_of(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; });
+  if (guessed && polygon.size() == 5 &&
+      equal_sides_and_turns(polygon, 2.0 * in.cfg.regular_tolerance, 2.0 * in.cfg.parallel_degrees))
+    return std::nullopt;
 
   // Every side is seen across its width: a tangent strip of a curved surface is narrow.
   for (std::size_t i = 0; i < ring.size() && !from_cap; ++i) {
@@ -406,7 +469,7 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
     return std::nullopt;
 
   // Height: the caps where seen, else where the points end along the axis.
-  auto [lo, hi] = detail::extrusion_extent(in, choice->caps, axis);
+  auto [lo, hi] = detail::extrusion_extent(in, choice.caps, axis);
   const double height = hi - lo;
   if (!(height > 0.0)) return std::nullopt;
 
@@ -442,6 +505,15 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
                     geometry::signed_distance(polygon, Eigen::Vector2d(d.dot(u), d.dot(v))));
   };
   return out;
+}
+
+}  // namespace
+
+std::optional<FittedSolid> fit_prism(const SolveInput& in) {
+  const auto faces = detail::faces_by_size(in.planes);
+  for (const AxisChoice& choice : choose_axes(in, faces))
+    if (auto solid = fit_prism_along(in, choice)) return solid;
+  return std::nullopt;
 }
 
 }  // namespace cloudshape::pipeline
