@@ -262,9 +262,8 @@ bool is_rectangle(const geometry::Polygon2& p, double degrees) {
 }
 
 // Total least-squares line through points, as a side: normal turned to `outward`.
-constexpr std::size_t kMinLinePoints = 5;
 std::optional<SideRun> fit_line(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& outward) {
-  if (pts.size() < kMinLinePoints) return std::nullopt;
+  if (pts.size() < 5) return std::nullopt;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
   for (const auto& p : pts) mean += p / static_cast<double>(pts.size());
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
@@ -379,12 +378,16 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
     double shortest_len = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < ring.size(); ++k) {
       if (ring[k].seen) continue;
-      const auto a = intersect(ring[(k + ring.size() - 1) % ring.size()], ring[k]);
-      const auto b = intersect(ring[k], ring[(k + 1) % ring.size()]);
+      const SideRun& prev = ring[(k + ring.size() - 1) % ring.size()];
+      const SideRun& next = ring[(k + 1) % ring.size()];
+      const auto a = intersect(prev, ring[k]);
+      const auto b = intersect(ring[k], next);
       const double len = a && b ? (*b - *a).norm() : 0.0;
-      const auto meet = intersect(ring[(k + ring.size() - 1) % ring.size()], ring[(k + 1) % ring.size()]);
-      const bool unsupported = ring[k].weight <= 0.0 && a && b && meet && (*meet - 0.5 * (*a + *b)).norm() <= len;
-      if (!(len < 3.0 * cell) && !unsupported) continue;
+      if (!(len < 3.0 * cell)) {
+        if (ring[k].weight > 0.0 || !a || !b) continue;
+        const auto meet = intersect(prev, next);
+        if (!meet || (*meet - 0.5 * (*a + *b)).norm() > len) continue;
+      }
       if (len < shortest_len) shortest = k, shortest_len = len;
     }
     if (shortest < ring.size()) {
@@ -435,18 +438,19 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // A cap's border is ragged and notched where something hid it: a concave corner between two
   // sides only that border shows is no evidence of the cross-section.
   for (std::size_t i = 0; i < polygon.size(); ++i) {
-    if (std::abs(turn_degrees(polygon, i)) < in.cfg.prism_min_turn_degrees) return std::nullopt;
-    if (turn_degrees(polygon, i) < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) return std::nullopt;
+    const double turn = turn_degrees(polygon, i);
+    if (std::abs(turn) < in.cfg.prism_min_turn_degrees) return std::nullopt;
+    if (turn < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) return std::nullopt;
   }
   if (is_rectangle(polygon, in.cfg.parallel_degrees)) return std::nullopt;
-  const bool regular = equal_sides_and_turns(polygon, in.cfg.regular_tolerance, in.cfg.parallel_degrees);
-  if (regular && polygon.size() == 5) return std::nullopt;
-  // Sides only a cap's border shows are placed less exactly (as in merge_collinear): a pentagon
-  // regular within twice the tolerance is left to the pentagonal prism, which fits it as one.
+  // A regular pentagon is the pentagonal prism's. Sides only a cap's border shows are placed less
+  // exactly (as in merge_collinear): with one of them, regular within twice the tolerance is.
   const bool guessed = std::any_of(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; });
-  if (guessed && polygon.size() == 5 &&
-      equal_sides_and_turns(polygon, 2.0 * in.cfg.regular_tolerance, 2.0 * in.cfg.parallel_degrees))
+  const double slack = guessed ? 2.0 : 1.0;
+  if (polygon.size() == 5 &&
+      equal_sides_and_turns(polygon, slack * in.cfg.regular_tolerance, slack * in.cfg.parallel_degrees))
     return std::nullopt;
+  const bool regular = equal_sides_and_turns(polygon, in.cfg.regular_tolerance, in.cfg.parallel_degrees);
 
   // Every side is seen across its width: a tangent strip of a curved surface is narrow.
   for (std::size_t i = 0; i < ring.size() && !from_cap; ++i) {
