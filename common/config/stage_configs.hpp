@@ -178,6 +178,9 @@ struct SolveConfig {
   double prism_corner_gap = 8.0;         // two prism sides meet at a corner when one's points end this near (resolutions) where the next's begin
   double prism_outline_cell = 2.0;       // a cap's outline (a prism seen from one side) is traced on cells this wide (resolutions)
   double prism_min_turn_degrees = 20.0;  // a prism's outline turns at least this much at every corner: shallower is a curved side cut into strips
+  double prism_corner_cut_cells = 3.0;   // a cap-outline side no face shows, shorter than this (outline cells): a rounded corner, its neighbours meet
+  double prism_merge_rms_cells = 0.5;    // neighbouring unseen cap-outline sides whose border fits one line within this RMS (outline cells) are one
+  double prism_guessed_slack = 2.0;      // with a side only the cap's border shows, a pentagon regular within this multiple of the tolerances is pentagonal_prism's
 };
 
 }  // namespace cloudshape::config

@@ -285,13 +285,13 @@ double rms_off_line(const std::vector<Eigen::Vector2d>& pts, const SideRun& r) {
 }
 
 // The traced outline bends where the cap's border is ragged, cutting one hidden side into
-// several: two neighbouring sides no face shows whose border points lie on one line, within half
-// an outline cell (the grid's own rounding) in the root mean square, are one side. The closest
+// several: two neighbouring sides no face shows whose border points lie on one line, within
+// max_rms (about the grid's own rounding) in the root mean square, are one side. The closest
 // such pair joins first, until none is left.
-std::vector<SideRun> merge_unseen_runs(std::vector<SideRun> ring, double cell) {
+std::vector<SideRun> merge_unseen_runs(std::vector<SideRun> ring, double max_rms) {
   while (ring.size() > 3) {
     std::size_t best = ring.size();
-    double best_rms = 0.5 * cell;
+    double best_rms = max_rms;
     std::optional<SideRun> joined;
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const std::size_t j = (i + 1) % ring.size();
@@ -383,7 +383,7 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
       const auto a = intersect(prev, ring[k]);
       const auto b = intersect(ring[k], next);
       const double len = a && b ? (*b - *a).norm() : 0.0;
-      if (!(len < 3.0 * cell)) {
+      if (!(len < in.cfg.prism_corner_cut_cells * cell)) {
         if (ring[k].weight > 0.0 || !a || !b) continue;
         const auto meet = intersect(prev, next);
         if (!meet || (*meet - 0.5 * (*a + *b)).norm() > len) continue;
@@ -395,7 +395,7 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
       cut = true;
     }
   }
-  return merge_unseen_runs(std::move(ring), cell);
+  return merge_unseen_runs(std::move(ring), in.cfg.prism_merge_rms_cells * cell);
 }
 
 // The prism along one axis hypothesis, or nothing when its outline or faces are no prism's.
@@ -444,9 +444,10 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   }
   if (is_rectangle(polygon, in.cfg.parallel_degrees)) return std::nullopt;
   // A regular pentagon is the pentagonal prism's. Sides only a cap's border shows are placed less
-  // exactly (as in merge_collinear): with one of them, regular within twice the tolerance is.
+  // exactly (as in merge_collinear): with one of them, regular within prism_guessed_slack times the
+  // tolerances is.
   const bool guessed = std::any_of(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; });
-  const double slack = guessed ? 2.0 : 1.0;
+  const double slack = guessed ? in.cfg.prism_guessed_slack : 1.0;
   if (polygon.size() == 5 &&
       equal_sides_and_turns(polygon, slack * in.cfg.regular_tolerance, slack * in.cfg.parallel_degrees))
     return std::nullopt;
