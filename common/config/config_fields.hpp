@@ -64,6 +64,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_enclosing", c.structure_enclosing);
   f("structure_span", c.structure_span);
   f("structure_hypotheses", c.structure_hypotheses);
+  f("contact_noise_sigmas", c.contact_noise_sigmas);
+  f("contact_min_band", c.contact_min_band);
   f("remainder_refine", c.remainder_refine);
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_max_share", c.fragment_max_share);
