@@ -136,7 +136,7 @@ struct SolveConfig {
   double min_inlier_fraction = 0.5;      // below this no candidate solid is reported
   double parallel_degrees = 10.0;        // normals within this angle count as parallel
   double perpendicular_degrees = 10.0;   // ... or as perpendicular
-  double apex_conditioning = 0.004;      // tangent planes meeting less decisively than this (eigenvalue ratio) have no apex
+  double apex_conditioning = 0.0001;     // tangent planes meeting less decisively than this (eigenvalue ratio) have no apex: a singular system
   double cap_band = 3.0;                 // side fits of cylinders and cones skip points this near (resolutions) a cap plane
   double face_slab = 0.03;               // box faces: median of the points this share of the extent from each end
   double open_end_quantile = 0.9;       // box end without a face: this quantile of the slab (even spread)
