@@ -5,6 +5,7 @@
 #include <map>
 #include <string>
 
+#include "captured_scene.hpp"
 #include "config/pipeline_config.hpp"
 #include "segment/segment_scene.hpp"
 #include "segment/structure_contact.hpp"
@@ -25,19 +26,9 @@ Purity purity(synth::SceneLayout layout, std::uint64_t seed, const synth::Captur
   recipe.layout = layout;
   recipe.count = 3;
   recipe.seed = seed;
-  const synth::SceneCapture capture = synth::capture_scene(recipe, options);
-  PointList points;
-  GridLayout grid{capture.image.width, capture.image.height, {}};
-  std::vector<std::uint32_t> labels;
-  for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
-    if (!capture.image.points[i].allFinite()) continue;
-    points.push_back(capture.image.points[i]);
-    grid.pixel.push_back(static_cast<std::uint32_t>(i));
-    labels.push_back(capture.image.labels[i]);
-  }
-  std::map<std::uint32_t, std::size_t> group_size;
-  for (std::uint32_t l : labels) ++group_size[l];
-  const SceneSegmentation s = segment_scene(points, grid, config::PipelineConfig{}.segment);
+  const CapturedScene scene = capture_points(recipe, options);
+  const std::vector<std::uint32_t>& labels = scene.labels;
+  const SceneSegmentation s = segment_scene(scene.points, scene.grid, config::PipelineConfig{}.segment);
   Purity out;
   for (const auto& object : s.objects) {
     std::map<std::uint32_t, std::size_t> votes;
@@ -51,7 +42,7 @@ Purity purity(synth::SceneLayout layout, std::uint64_t seed, const synth::Captur
     if (most < 200) continue;
     ++out.objects;
     const double share = static_cast<double>(structure) / static_cast<double>(object.size());
-    const double kept = static_cast<double>(most) / static_cast<double>(group_size[major]);
+    const double kept = static_cast<double>(most) / static_cast<double>(scene.size.at(major));
     out.worst_structure_share = std::max(out.worst_structure_share, share);
     out.worst_kept_share = std::min(out.worst_kept_share, kept);
     out.detail += " " + std::to_string(major) + ": structure " + std::to_string(share).substr(0, 5) + " kept " +

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "captured_scene.hpp"
 #include "config/pipeline_config.hpp"
 #include "segment/segment_scene.hpp"
 #include "synth/scene_capture.hpp"
@@ -27,19 +28,10 @@ Scored score(const synth::SceneRecipe& recipe) {
   synth::CaptureOptions options;
   options.width = 320;
   options.height = 240;
-  const synth::SceneCapture capture = synth::capture_scene(recipe, options);
-  PointList points;
-  GridLayout grid{capture.image.width, capture.image.height, {}};
-  std::vector<std::uint32_t> labels;
-  for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
-    if (!capture.image.points[i].allFinite()) continue;
-    points.push_back(capture.image.points[i]);
-    grid.pixel.push_back(static_cast<std::uint32_t>(i));
-    labels.push_back(capture.image.labels[i]);
-  }
-  std::map<std::uint32_t, std::size_t> group_size;
-  for (std::uint32_t l : labels) ++group_size[l];
-  const SceneSegmentation s = segment_scene(points, grid, config::PipelineConfig{}.segment);
+  const CapturedScene scene = capture_points(recipe, options);
+  const std::vector<std::uint32_t>& labels = scene.labels;
+  std::map<std::uint32_t, std::size_t> group_size = scene.size;
+  const SceneSegmentation s = segment_scene(scene.points, scene.grid, config::PipelineConfig{}.segment);
   Scored out;
   std::map<std::uint32_t, double> best_iou;
   for (const auto& object : s.objects) {
