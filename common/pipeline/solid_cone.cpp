@@ -141,9 +141,7 @@ std::optional<FittedSolid> fit_cone_any(const SolveInput& in) {
   std::optional<FittedSolid> on_base;
   if (!faces.empty()) on_base = fit_cone_on_base(in, *faces[0]);
   // A strip of the side taken for the base gives a cone far larger than the points: none.
-  const double diameter = 2.0 * in.keypoints.reference.radius;
-  if (on_base && (on_base->dimensions[0].second > in.cfg.max_size_ratio * diameter ||
-                  on_base->dimensions[1].second > in.cfg.max_size_ratio * diameter))
+  if (on_base && !detail::plausible(*on_base, 2.0 * in.keypoints.reference.radius, in.cfg.max_size_ratio))
     on_base.reset();
   const double on_base_share = on_base ? explained_share(in, *on_base) : 0.0;
   // Where the key-points say polyhedron (a box, tetrahedron or prism corner count), the cone

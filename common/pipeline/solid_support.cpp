@@ -39,6 +39,14 @@ std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {
 
 namespace detail {
 
+bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio) {
+  if (!s.center.allFinite() || !s.axes.allFinite()) return false;
+  for (const auto& [name, value] : s.dimensions)
+    if (name != "sides" && (!(value > 0.0) || !std::isfinite(value) || value > max_size_ratio * cloud_diameter))
+      return false;
+  return true;
+}
+
 std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes) {
   std::vector<const DetectedPlane*> faces;
   for (const auto& p : planes.planes)

@@ -85,6 +85,10 @@ std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in);
 
 namespace detail {
 
+// A solid with finite pose and positive, finite dimensions none larger than max_size_ratio times
+// the cloud's enclosing diameter (a prism's side count aside).
+bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio);
+
 // True flat faces, largest first.
 std::vector<const DetectedPlane*> faces_by_size(const PlaneSegmentation& planes);
 

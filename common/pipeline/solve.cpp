@@ -63,14 +63,6 @@ double sector_coverage(const PointList& cloud, const Point& center, const Eigen:
   return seen / 26.0;
 }
 
-bool plausible(const FittedSolid& s, double cloud_diameter, double max_size_ratio) {
-  if (!s.center.allFinite() || !s.axes.allFinite()) return false;
-  for (const auto& [name, value] : s.dimensions)
-    if (name != "sides" && (!(value > 0.0) || !std::isfinite(value) || value > max_size_ratio * cloud_diameter))
-      return false;
-  return true;
-}
-
 // Share of the face's convex hull its points cover, in cells of `cell`: a face is filled, while a
 // single scan line is flat too (every lidar ring on a sphere lies in a plane) but covers a curve.
 double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell) {
@@ -158,7 +150,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const double cos_parallel = std::cos(cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
   std::vector<double> fills(planes.planes.size(), std::numeric_limits<double>::quiet_NaN());
   const auto admissible = [&](const std::optional<FittedSolid>& solid) {
-    return solid && plausible(*solid, diameter, cfg.max_size_ratio) &&
+    return solid && detail::plausible(*solid, diameter, cfg.max_size_ratio) &&
            flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
                            cfg.flat_face_min_fill, cfg.side_face_min_share, fills) <= cfg.curved_side_flat_share;
   };
@@ -195,7 +187,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // the points show (container.hpp).
   if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     auto container = container_of_hollow(cloud, chosen->first, cfg);
-    if (container && plausible(*container, diameter, cfg.max_size_ratio)) {
+    if (container && detail::plausible(*container, diameter, cfg.max_size_ratio)) {
       const Verification v = verify(cloud, *container, tolerance, static_cast<std::size_t>(cfg.verify_samples));
       fitted.emplace_back(std::move(*container), v);
       chosen = &fitted.back();

@@ -61,8 +61,7 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
 // (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
-                               std::vector<StructureFootprint>& footprints) {
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan) {
   SceneSegmentation out;
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
                          ? build_organized_graph(points, grid, cfg, pool)
@@ -76,7 +75,11 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
   out.structure = remove_structure(g, cfg, removed, pool, from_inside);
-  if (grid.organized()) footprints = structure_footprints(points, g, removed, out.structure, cfg);
+  // The cells at an object's foot hold points of the plane it stands on or against. In an organized
+  // cloud only: in a sparse lidar frame a segment at a target's foot is often a strip of ground
+  // rings, which trimmed of its lowest points rises like a solid of its own.
+  const std::vector<StructureFootprint> footprints =
+      grid.organized() ? structure_footprints(points, g, removed, out.structure, cfg) : std::vector<StructureFootprint>{};
   // What the structure leaves of a wide, sparse scene, at its own (finer) resolution; input
   // indices through `kept` from then on.
   std::vector<std::uint32_t> kept;
@@ -126,8 +129,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       own.reserve(segment_points[s].size());
       for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
       if (finer_on_its_own(own, spacing[spacing.size() / 2], cfg, pool)) {
-        std::vector<StructureFootprint> none;
-        for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan, none).objects) {
+        for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan).objects) {
           for (std::uint32_t& i : part) i = segment_points[s][i];
           refined.push_back(std::move(part));
         }
@@ -145,9 +147,12 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
     const std::uint32_t n = g.node_of_point[i];
     if (n == kNoNode || label[n] < 0) continue;
     const std::int32_t o = object_of_segment[label[n]];
-    if (o >= 0) out.objects[o].push_back(kept.empty() ? i : kept[i]);
+    const std::uint32_t p = kept.empty() ? i : kept[i];
+    if (o >= 0 && !on_structure(footprints, points[p])) out.objects[o].push_back(p);
   }
   for (auto& part : refined) out.objects.push_back(std::move(part));
+  out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), [](const auto& o) { return o.empty(); }),
+                    out.objects.end());
   std::stable_sort(out.objects.begin(), out.objects.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
   return out;
@@ -157,8 +162,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
-  std::vector<StructureFootprint> footprints;
-  SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt, footprints);
+  SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt);
   // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
   // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is
   // a leftover of that plane.
@@ -172,19 +176,6 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
                                      }),
                       out.objects.end());
   }
-  // The cells at an object's foot hold points of the plane it stands on or against. In an organized
-  // cloud only: in a sparse lidar frame a segment at a target's foot is often a strip of ground
-  // rings, which trimmed of its lowest points rises like a solid of its own.
-  if (grid.organized()) {
-    for (auto& object : out.objects)
-      object.erase(std::remove_if(object.begin(), object.end(),
-                                  [&](std::uint32_t i) { return on_structure(footprints, points[i]); }),
-                   object.end());
-  }
-  out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), [](const auto& o) { return o.empty(); }),
-                    out.objects.end());
-  std::stable_sort(out.objects.begin(), out.objects.end(),
-                   [](const auto& a, const auto& b) { return a.size() > b.size(); });
   return out;
 }
 

@@ -52,12 +52,13 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
     f.cell = median(spacing[k]);
     f.band = std::max(cfg.contact_noise_sigmas * 1.4826 * median(distance[k]), cfg.contact_min_band * f.cell);
     geometry::plane_basis(f.plane.normal, f.u, f.v);
+  }
+  for (std::uint32_t n = 0; n < graph.size(); ++n) {
+    if (plane_of[n] < 0) continue;
+    StructureFootprint& f = out[plane_of[n]];
     if (!(f.cell > 0.0)) continue;
-    for (std::uint32_t n = 0; n < graph.size(); ++n) {
-      if (plane_of[n] != static_cast<std::int32_t>(k)) continue;
-      f.cells.insert(cell_key(static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.u) / f.cell)),
-                              static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.v) / f.cell))));
-    }
+    f.cells.insert(cell_key(static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.u) / f.cell)),
+                            static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.v) / f.cell))));
   }
   return out;
 }

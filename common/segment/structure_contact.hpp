@@ -1,5 +1,5 @@
-// Where an object stands on or against a structure plane, the graph's cells at its foot hold
-// points of both: those of the object's points that lie over the plane's footprint and within its own noise band are the plane's.
+// Where an object stands on or against a structure plane, the graph's cells at its foot hold points
+// of both: an object's points over the plane's footprint, within its own noise band, are the plane's.
 #pragma once
 
 #include <cstdint>
