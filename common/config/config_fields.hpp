@@ -38,6 +38,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("voxel_target_nodes", c.voxel_target_nodes);
   f("depth_jump", c.depth_jump);
   f("normal_radius", c.normal_radius);
+  f("crease_degrees", c.crease_degrees);
+  f("crease_flank_share", c.crease_flank_share);
   f("normal_neighbours", c.normal_neighbours);
   f("line_spread", c.line_spread);
   f("line_max_neighbours", c.line_max_neighbours);

@@ -93,6 +93,8 @@ struct SegmentConfig {
   std::int64_t voxel_target_nodes = 20000; // unorganized: a surface occupying more cells than this is gridded coarser, to about this many
   double depth_jump = 0.02;                // organized: neighbours whose ranges differ by more than this share of the range are not connected
   std::int64_t normal_radius = 2;          // organized: half-width of a node's normal window, in nodes
+  double crease_degrees = 25.0;            // organized: normals normal_radius nodes away either side turning concavely by more than this: a crease ...
+  double crease_flank_share = 0.33;        // ... whose flanks a further normal_radius out turn by less than this share of it
   std::int64_t normal_neighbours = 16;     // unorganized: nodes in a node's normal neighbourhood
   double line_spread = 0.1;                // unorganized: a neighbourhood spreading less than this across (share of along) is one scan line ...
   std::int64_t line_max_neighbours = 128;  // ... and grows up to this many nodes until it spans a surface (lidar rings)

@@ -109,7 +109,9 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   // cfg.edge_curvature) have normals blurred between two faces, which would let a patch creep
   // around an edge, and would judge a junction on a scale too small to see its shape.
   std::vector<char> edge_node(g.size(), 0);
-  for (std::uint32_t n = 0; n < g.size(); ++n) edge_node[n] = !removed[n] && g.curvature[n] >= cfg.edge_curvature;
+  // A node on a concave crease (organized graphs mark them) lies on an edge as well.
+  for (std::uint32_t n = 0; n < g.size(); ++n)
+    edge_node[n] = !removed[n] && (g.curvature[n] >= cfg.edge_curvature || (!g.crease.empty() && g.crease[n]));
   // A component that is a line has no surface to judge: it stays whole.
   std::int32_t components = 0;
   const std::vector<std::int32_t> component =

@@ -20,6 +20,7 @@ struct NeighbourGraph {
   std::vector<Eigen::Vector3d> normals;  // unit; towards the viewpoint when there is one
   std::vector<double> curvature;         // surface variation of each node's neighbourhood
   std::vector<double> spacing;           // each node's typical distance to its neighbours
+  std::vector<char> crease;              // organized graphs: per node, on a concave crease; empty otherwise
   std::vector<std::uint32_t> adjacency_begin;  // CSR: neighbours of n are adjacency[begin[n] .. begin[n+1])
   std::vector<std::uint32_t> adjacency;
   std::vector<std::uint32_t> node_of_point;    // per input point: its node, or kNoNode

@@ -10,6 +10,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "segment/detail/concave_creases.hpp"
 #include "segment/detail/graph_moments.hpp"
 
 namespace cloudshape::segment {
@@ -211,6 +212,14 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
       if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
     }
   });
+
+  detail::CellLayout cells{cells_x, cells_y, std::vector<std::uint32_t>(cells_x * cells_y), {}, std::move(range)};
+  for (std::size_t cy = 0; cy < cells_y; ++cy) {
+    for (std::size_t cx = 0; cx < cells_x; ++cx) cells.node_of_cell[cy * cells_x + cx] = cell_node[cell_at(cx, cy)];
+  }
+  cells.cell_of_node.resize(g.size());
+  for (std::size_t n = 0; n < g.size(); ++n) cells.cell_of_node[n] = {node_pixel[n] % width / stride, node_pixel[n] / width / stride};
+  g.crease = detail::concave_creases(g, cells, cfg, pool);
   return g;
 }
 
