@@ -156,6 +156,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("frustum_min_taper", c.frustum_min_taper);
   f("frustum_min_top_share", c.frustum_min_top_share);
   f("regular_tolerance", c.regular_tolerance);
+  f("triangle_fill_tolerance", c.triangle_fill_tolerance);
   f("curved_side_flat_share", c.curved_side_flat_share);
   f("side_face_min_share", c.side_face_min_share);
   f("flat_face_fill_cells", c.flat_face_fill_cells);

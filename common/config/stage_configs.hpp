@@ -164,6 +164,7 @@ struct SolveConfig {
   double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
   double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
   double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
+  double triangle_fill_tolerance = 0.15; // a face seen as a tetrahedron's triangle: its points' hull within this share of the triangle's area
   double flat_face_fill_cells = 2.0;     // cell of the fill test below, in resolutions
   double flat_face_min_fill = 0.5;       // a flat face off the caps counts only when its points cover this share of its convex hull (a scan line does not)
   double curved_side_flat_share = 0.6;   // at most this share of a cylinder's, sphere's, cone's or frustum's points off its caps on true flat faces (an octahedron: nearly all) ...

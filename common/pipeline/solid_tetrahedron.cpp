@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include "pipeline/solids.hpp"
+#include "pipeline/tetrahedron_two_faces.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -94,8 +96,9 @@ FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices, double regula
   const double mean = edge_sum / 6.0;
   out.dimensions.emplace_back("edge", mean);
   out.vertices.assign(vertices.begin(), vertices.end());
-  out.regular = std::all_of(edges.begin(), edges.end(),
-                            [&](double e) { return std::abs(e - mean) <= regular_tolerance * mean; });
+  out.regular = std::all_of(edges.begin(), edges.end(), [&](double e) {
+    return std::abs(e - mean) <= regular_tolerance * mean;
+  });
   const Eigen::Vector3d x = (vertices[0] - out.center).normalized();
   Eigen::Vector3d y = vertices[1] - out.center;
   y = (y - y.dot(x) * x).normalized();
@@ -130,7 +133,7 @@ std::optional<std::array<Point, 4>> from_four_faces(const std::vector<const Dete
 // points end along its normal. Every hidden face shares an edge with every seen one, and
 // the seen faces are whole up to that edge, so the points do reach it.
 std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
-                                           const std::vector<const DetectedPlane*>& seen) {
+                                                    const std::vector<const DetectedPlane*>& seen) {
   // Two faces map onto canonical 0, 1 by a rotation either way round; three faces only in
   // one of their two cyclic orders (the other is a mirror image).
   std::array<int, 4> slots{0, 1, 2, 3};
@@ -159,7 +162,8 @@ std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
     std::array<int, 3> three{};
     for (int f = 0, k = 0; f < 4; ++f)
       if (f != skip) three[k++] = f;
-    const auto v = geometry::intersect_three_planes(planes[three[0]], planes[three[1]], planes[three[2]]);
+    const auto v =
+        geometry::intersect_three_planes(planes[three[0]], planes[three[1]], planes[three[2]]);
     if (!v) return std::nullopt;
     vertices[skip] = *v;
   }
@@ -171,18 +175,40 @@ std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
 
 // Any tetrahedron seen whole: its four largest faces, pairwise far from parallel, bound it when
 // each one's plane leaves the opposite corner inside.
-std::optional<std::array<Point, 4>> from_largest_faces(const std::vector<const DetectedPlane*>& faces,
-                                                       double cos_parallel) {
+std::optional<std::array<Point, 4>> from_largest_faces(
+    const std::vector<const DetectedPlane*>& faces, double cos_parallel) {
   if (faces.size() < 4) return std::nullopt;
   const std::vector<const DetectedPlane*> four(faces.begin(), faces.begin() + 4);
   for (std::size_t a = 0; a < 4; ++a)
     for (std::size_t b = a + 1; b < 4; ++b)
-      if (std::abs(four[a]->plane.normal.dot(four[b]->plane.normal)) > cos_parallel) return std::nullopt;
+      if (std::abs(four[a]->plane.normal.dot(four[b]->plane.normal)) > cos_parallel)
+        return std::nullopt;
   const auto vertices = from_four_faces(four);
   if (!vertices) return std::nullopt;
   for (int f = 0; f < 4; ++f)
     if (!(four[f]->plane.signed_distance((*vertices)[f]) < 0.0)) return std::nullopt;
   return vertices;
+}
+
+// How far the seen faces' points miss filling the tetrahedron's faces along them: the largest
+// |hull area / triangle area - 1| (infinite for a degenerate triangle).
+double fill_error(const SolveInput& in, const std::array<Point, 4>& vertices,
+                  const std::vector<const DetectedPlane*>& seen) {
+  const std::array<geometry::Plane, 4> planes = face_planes(vertices);
+  double worst = 0.0;
+  for (const DetectedPlane* f : seen) {
+    int best = 0;
+    for (int k = 1; k < 4; ++k)
+      if (planes[k].normal.dot(f->plane.normal) > planes[best].normal.dot(f->plane.normal))
+        best = k;
+    std::array<Point, 3> tri;
+    for (int v = 0, k = 0; v < 4; ++v)
+      if (v != best) tri[k++] = vertices[v];
+    const double triangle = 0.5 * (tri[1] - tri[0]).cross(tri[2] - tri[0]).norm();
+    if (!(triangle > 0.0)) return std::numeric_limits<double>::infinity();
+    worst = std::max(worst, std::abs(detail::face_hull_area(in.cloud, *f) / triangle - 1.0));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -194,18 +220,37 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   std::optional<std::array<Point, 4>> vertices;
   if (seen.size() == 4) vertices = from_four_faces(seen);
   // An irregular one meets at other angles: its four faces, when the cloud shows them all.
-  if (!vertices) vertices = from_largest_faces(faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
-  if (!vertices && seen.size() >= 2) vertices = from_seen_faces(in, seen);
+  if (!vertices)
+    vertices = from_largest_faces(
+        faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
+  // Two or three faces seen: at a regular one's angles, the regular tetrahedron they fix; any
+  // tetrahedron from the two largest when both are whole triangles. An irregular one may meet at
+  // a regular one's angles too: a regular reading whose faces the seen points do not fill
+  // (within solve.triangle_fill_tolerance) gives way to the other where that fills them closer.
+  if (!vertices) {
+    const auto regular = seen.size() >= 2 ? from_seen_faces(in, seen) : std::nullopt;
+    const auto any = detail::tetrahedron_from_two_faces(
+        in, faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
+    vertices = regular ? regular : any;
+    if (regular && any) {
+      const double regular_error = fill_error(in, *regular, seen);
+      if (regular_error > in.cfg.triangle_fill_tolerance &&
+          fill_error(in, *any, seen) < regular_error)
+        vertices = any;
+    }
+  }
   if (!vertices) return std::nullopt;
   std::vector<Eigen::Vector3d> normals;
   for (const geometry::Plane& p : face_planes(*vertices)) normals.push_back(p.normal);
   const auto on_faces = detail::points_on_planes_along(in.planes, normals, in.cfg.parallel_degrees);
-  if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
+  if (static_cast<double>(on_faces) <
+      in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
     return std::nullopt;
   const double cos_along = std::cos(in.cfg.stray_face_degrees * 3.14159265358979323846 / 180.0);
   // A tetrahedron has no two parallel faces: an octahedron's opposite faces or a pyramid's fifth
   // (along none of its four outward normals) say the four were picked from a solid with more.
-  if (detail::stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share) return std::nullopt;
+  if (detail::stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share)
+    return std::nullopt;
   return make_tetrahedron(*vertices, in.cfg.regular_tolerance);
 }
 

@@ -1,5 +1,6 @@
 // Concave creases in an organized cloud: a fold between two flat faces (one box on another turned
-// a little, a can against a box) is a crease, a ridge and the evenly turning inside of a bowl are not.
+// a little, a can against a box) is a crease, a ridge and the evenly turning inside of a bowl are
+// not.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,7 +33,8 @@ Frame frame(const std::function<double(double)>& depth) {
     for (std::size_t c = 0; c < kWidth; ++c) {
       const double ray_x = (static_cast<double>(c) - kWidth / 2.0 + 0.5) / kFocal;
       double z = 1.0;
-      for (int it = 0; it < 60; ++it) z = depth(ray_x * z);  // a fixed point: the slopes are under 1
+      for (int it = 0; it < 60; ++it)
+        z = depth(ray_x * z);  // a fixed point: the slopes are under 1
       const double ray_y = (static_cast<double>(r) - kHeight / 2.0 + 0.5) / kFocal;
       f.points.emplace_back(ray_x * z, ray_y * z, z);
       f.grid.pixel.push_back(static_cast<std::uint32_t>(r * kWidth + c));
@@ -56,7 +58,9 @@ std::vector<std::size_t> creases_per_column(const NeighbourGraph& g) {
 }
 
 // Two flat faces meeting down the middle column, each turned `half_degrees` towards the sensor.
-double fold(double x, double half_degrees) { return 1.5 - std::tan(half_degrees * kPi / 180.0) * std::abs(x); }
+double fold(double x, double half_degrees) {
+  return 1.5 - std::tan(half_degrees * kPi / 180.0) * std::abs(x);
+}
 
 TEST(ConcaveCrease, AFoldBetweenTwoFlatFacesIsACrease) {
   // Faces 30 degrees apart: their normals turn 15 degrees each side of the fold, under
@@ -90,13 +94,15 @@ TEST(ConcaveCrease, TheFoldCutsTheFacesApart) {
     EXPECT_NE(left, right) << "a segment spans the fold";
   }
   cfg.crease_degrees = 0.0;
-  EXPECT_EQ(segment_scene(f.points, f.grid, cfg).objects.size(), 1u) << "without the crease rule the faces are one patch";
+  EXPECT_EQ(segment_scene(f.points, f.grid, cfg).objects.size(), 1u)
+      << "without the crease rule the faces are one patch";
 }
 
 TEST(ConcaveCrease, ARidgeIsNoCrease) {
   const Frame f = frame([](double x) { return 1.5 + std::tan(15.0 * kPi / 180.0) * std::abs(x); });
   const NeighbourGraph g = build_organized_graph(f.points, f.grid, one_node_per_pixel());
-  for (std::size_t c = 0; c < kWidth; ++c) EXPECT_EQ(creases_per_column(g)[c], 0u) << "column " << c;
+  for (std::size_t c = 0; c < kWidth; ++c)
+    EXPECT_EQ(creases_per_column(g)[c], 0u) << "column " << c;
 }
 
 TEST(ConcaveCrease, ABowlsEvenlyTurningInsideIsNoCrease) {
@@ -110,8 +116,10 @@ TEST(ConcaveCrease, ABowlsEvenlyTurningInsideIsNoCrease) {
   const NeighbourGraph g = build_organized_graph(f.points, f.grid, cfg);
   const std::size_t mid = 30 * kWidth + 60;
   const double turn = std::acos(g.normals[mid - 6].dot(g.normals[mid + 6])) * 180.0 / kPi;
-  ASSERT_GT(turn, cfg.crease_degrees) << "the normals either side must turn enough to be a crease by that alone";
-  for (std::size_t c = 0; c < kWidth; ++c) EXPECT_EQ(creases_per_column(g)[c], 0u) << "column " << c;
+  ASSERT_GT(turn, cfg.crease_degrees)
+      << "the normals either side must turn enough to be a crease by that alone";
+  for (std::size_t c = 0; c < kWidth; ++c)
+    EXPECT_EQ(creases_per_column(g)[c], 0u) << "column " << c;
 }
 
 }  // namespace

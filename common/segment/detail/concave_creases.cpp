@@ -7,12 +7,13 @@
 
 namespace cloudshape::segment::detail {
 
-std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cells, const config::SegmentConfig& cfg,
-                                  parallel::ThreadPool* pool) {
+std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cells,
+                                  const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
   if (!(cfg.crease_degrees > 0.0)) return {};
   const double crease_cos = std::cos(cfg.crease_degrees * 3.14159265358979323846 / 180.0);
   const auto r = static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius));
-  const auto cells_x = static_cast<std::ptrdiff_t>(cells.cells_x), cells_y = static_cast<std::ptrdiff_t>(cells.cells_y);
+  const auto cells_x = static_cast<std::ptrdiff_t>(cells.cells_x),
+             cells_y = static_cast<std::ptrdiff_t>(cells.cells_y);
   constexpr int kDirections[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
   const auto angle = [&](std::uint32_t a, std::uint32_t b) {
     return std::acos(std::clamp(g.normals[a].dot(g.normals[b]), -1.0, 1.0));
@@ -28,7 +29,8 @@ std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cel
         const std::ptrdiff_t x = cx + k * d[0], y = cy + k * d[1];
         if (x < 0 || y < 0 || x >= cells_x || y >= cells_y) return kNoNode;
         const std::uint32_t m = cells.node_of_cell[static_cast<std::size_t>(y * cells_x + x)];
-        return m != kNoNode && std::abs(range - cells.range[m]) <= cfg.depth_jump * std::min(range, cells.range[m])
+        return m != kNoNode && std::abs(range - cells.range[m]) <=
+                                   cfg.depth_jump * std::min(range, cells.range[m])
                    ? m
                    : kNoNode;
       };

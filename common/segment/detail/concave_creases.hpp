@@ -28,7 +28,7 @@ struct CellLayout {
 // cfg.crease_flank_share of that to the node a further cfg.normal_radius out (flat flanks: the
 // inside of a bowl turns evenly). Their normal windows do not overlap: one's noise is not in the
 // other. Empty when cfg.crease_degrees is 0. The same for any `pool`.
-std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cells, const config::SegmentConfig& cfg,
-                                  parallel::ThreadPool* pool);
+std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cells,
+                                  const config::SegmentConfig& cfg, parallel::ThreadPool* pool);
 
 }  // namespace cloudshape::segment::detail
