@@ -155,6 +155,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("cone_tip_gap", c.cone_tip_gap);
   f("frustum_min_taper", c.frustum_min_taper);
   f("frustum_min_top_share", c.frustum_min_top_share);
+  f("frustum_side_fill", c.frustum_side_fill);
   f("regular_tolerance", c.regular_tolerance);
   f("triangle_fill_tolerance", c.triangle_fill_tolerance);
   f("curved_side_flat_share", c.curved_side_flat_share);

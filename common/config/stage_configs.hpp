@@ -163,6 +163,7 @@ struct SolveConfig {
   double cone_tip_gap = 0.2;             // ... and no cone either when its points stop this share short of the apex, ringing it or not (a frustum seen from one side)
   double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)
   double frustum_min_top_share = 0.1;    // ... and its smaller radius is at least this share of the larger (less: a cone's apex)
+  double frustum_side_fill = 0.8;        // a frustum from its side alone: this share of ten stretches of its height hold side points
   double regular_tolerance = 0.03;       // a tetrahedron is regular when each of its six edges lies within this share of their mean
   double triangle_fill_tolerance = 0.15; // a face seen as a tetrahedron's triangle: its points' hull within this share of the triangle's area
   double flat_face_fill_cells = 2.0;     // cell of the fill test below, in resolutions

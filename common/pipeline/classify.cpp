@@ -57,7 +57,7 @@ std::vector<Shape> shapes_from_faces(const PlaneSegmentation& planes, double fac
     for (std::size_t b = a + 1; b < faces.size(); ++b)
       if (faces[a]->plane.normal.dot(faces[b]->plane.normal) < -0.95) parallel_pair = true;
   // A frustum comes last: it is the answer only where a cylinder and a cone both fall short.
-  if (faces.empty()) out = {Shape::sphere, Shape::cylinder, Shape::cone};
+  if (faces.empty()) out = {Shape::sphere, Shape::cylinder, Shape::cone, Shape::frustum};
   else if (parallel_pair) out = {Shape::cylinder, Shape::cone, Shape::frustum};
   else out = {Shape::cone, Shape::cylinder, Shape::frustum};
   return out;
@@ -184,6 +184,11 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
   add_unique(out.candidates, out.shape);
   for (Shape s : shapes_from_faces(planes, out.face_fraction, cfg)) add_unique(out.candidates, s);
   for (Shape s : kSolidShapes) add_unique(out.candidates, s);
+  // Points a sphere fits (a ball on two or three lidar rings: circles any round solid passes
+  // through) are no frustum's: it has one parameter more than a cone and explains them as well.
+  if (out.sphere_test)
+    out.candidates.erase(std::remove(out.candidates.begin(), out.candidates.end(), Shape::frustum),
+                         out.candidates.end());
   if (out.rectangular_face) {
     // No solid of revolution has a rectangular flat face.
     out.candidates.erase(std::remove_if(out.candidates.begin(), out.candidates.end(),

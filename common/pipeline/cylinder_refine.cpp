@@ -51,7 +51,90 @@ SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std:
   return cur;
 }
 
+namespace {
+
+// A point against a cone's side: its offset d from the axis point, height h along the axis,
+// radial part q (length rho), and distance from the side (signed: outside positive).
+struct SideOffset {
+  Eigen::Vector3d d, q;
+  double h, rho, distance;
+};
+
+SideOffset side_offset(const SideCone& c, const Point& p) {
+  SideOffset o;
+  o.d = p - c.on_axis;
+  o.h = o.d.dot(c.axis);
+  o.q = o.d - o.h * c.axis;
+  o.rho = o.q.norm();
+  o.distance = (o.rho - c.radius - c.slope * o.h) / std::sqrt(1.0 + c.slope * c.slope);
+  return o;
+}
+
+// One Tukey-weighted Gauss-Newton run of the cone's side distance; nothing when it fails.
+std::optional<SideCone> cone_steps(const PointList& cloud, const std::vector<std::uint32_t>& side,
+                                   SideCone cur, double band, int iterations) {
+  for (int it = 0; it < iterations; ++it) {
+    Eigen::Vector3d u, v;
+    geometry::plane_basis(cur.axis, u, v);
+    double mean_h = 0.0;
+    for (std::uint32_t i : side) mean_h += (cloud[i] - cur.on_axis).dot(cur.axis);
+    mean_h /= static_cast<double>(side.size());
+    cur.on_axis += mean_h * cur.axis;
+    cur.radius += cur.slope * mean_h;
+    // Parameters: axis tilt towards u and v, axis point moved along u and v, radius, slope.
+    Eigen::Matrix<double, 6, 6> normal_eq = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
+    std::size_t used = 0;
+    const double norm = std::sqrt(1.0 + cur.slope * cur.slope);
+    for (std::uint32_t i : side) {
+      const SideOffset o = side_offset(cur, cloud[i]);
+      const Eigen::Vector3d& d = o.d;
+      const Eigen::Vector3d& q = o.q;
+      const double h = o.h, rho = o.rho, r = o.distance;
+      if (!(rho > 0.0) || std::abs(r) >= band) continue;
+      const double t = 1.0 - (r / band) * (r / band);
+      const double w = t * t;
+      const Eigen::Vector3d n = q / rho;
+      Eigen::Matrix<double, 6, 1> j;
+      j << -h * n.dot(u) - cur.slope * d.dot(u), -h * n.dot(v) - cur.slope * d.dot(v), -n.dot(u),
+          -n.dot(v), -1.0, -h;
+      normal_eq += w * j * j.transpose();
+      rhs += w * j * (r * norm);
+      ++used;
+    }
+    if (used < 8) return std::nullopt;
+    const Eigen::Matrix<double, 6, 1> step = -normal_eq.ldlt().solve(rhs);
+    if (!step.allFinite()) return std::nullopt;
+    cur.axis = (cur.axis + step[0] * u + step[1] * v).normalized();
+    cur.on_axis += step[2] * u + step[3] * v;
+    cur.radius += step[4];
+    cur.slope += step[5];
+    if (!(cur.radius > 0.0)) return std::nullopt;
+    if (step.segment<3>(2).norm() < 1e-3 * band && step.head<2>().norm() < 1e-6 &&
+        std::abs(step[5]) < 1e-6)
+      break;
+  }
+  return cur;
+}
+
+}  // namespace
+
+std::optional<SideCone> refine_side_cone(const PointList& cloud,
+                                         const std::vector<std::uint32_t>& side,
+                                         const SideCone& start, double loose_band, double band,
+                                         int iterations) {
+  if (side.size() < 8 || !(band > 0.0) || !(loose_band >= band) || !(start.radius > 0.0))
+    return std::nullopt;
+  const auto loose = cone_steps(cloud, side, start, loose_band, iterations);
+  return loose ? cone_steps(cloud, side, *loose, band, iterations) : std::nullopt;
+}
+
 double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
+                        double band) {
+  return side_arc_degrees(cloud, side, SideCone{c.on_axis, c.axis, c.radius, 0.0}, band);
+}
+
+double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCone& c,
                         double band) {
   constexpr int kSectors = 36;
   constexpr double kPi = 3.14159265358979323846;
@@ -60,10 +143,9 @@ double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>
   std::array<std::size_t, kSectors> count{};
   std::size_t near = 0;
   for (std::uint32_t i : side) {
-    const Eigen::Vector3d d = cloud[i] - c.on_axis;
-    const Eigen::Vector3d q = d - d.dot(c.axis) * c.axis;
-    if (std::abs(q.norm() - c.radius) > band) continue;
-    const double a = std::atan2(q.dot(v), q.dot(u)) + kPi;
+    const SideOffset o = side_offset(c, cloud[i]);
+    if (std::abs(o.distance) > band) continue;
+    const double a = std::atan2(o.q.dot(v), o.q.dot(u)) + kPi;
     ++count[static_cast<std::size_t>(std::min(kSectors - 1.0, a / (2.0 * kPi) * kSectors))];
     ++near;
   }

@@ -89,15 +89,6 @@ std::optional<FittedSolid> fit_cone_without_base(const SolveInput& in) {
   return make_cone(apex + height * down, -down, radius, height);
 }
 
-// Share of (at most ~2000 of) the points within the inlier distance of the cone's surface.
-double explained_share(const SolveInput& in, const FittedSolid& cone) {
-  const std::size_t step = std::max<std::size_t>(1, in.cloud.size() / 2000);
-  std::size_t n = 0, near = 0;
-  for (std::size_t i = 0; i < in.cloud.size(); i += step, ++n)
-    near += std::abs(cone.signed_distance(in.cloud[i])) <= in.cfg.inlier_distance * in.resolution;
-  return n > 0 ? static_cast<double>(near) / static_cast<double>(n) : 0.0;
-}
-
 std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const DetectedPlane& base) {
   const auto side = detail::fit_conical_side(in, base, {&base});
   if (!side || !(side->radius > 0.0) || !(side->slope > 0.0)) return std::nullopt;
@@ -143,7 +134,7 @@ std::optional<FittedSolid> fit_cone_any(const SolveInput& in) {
   // A strip of the side taken for the base gives a cone far larger than the points: none.
   if (on_base && !detail::plausible(*on_base, 2.0 * in.keypoints.reference.radius, in.cfg.max_size_ratio))
     on_base.reset();
-  const double on_base_share = on_base ? explained_share(in, *on_base) : 0.0;
+  const double on_base_share = on_base ? detail::explained_share(in, *on_base) : 0.0;
   // Where the key-points say polyhedron (a box, tetrahedron or prism corner count), the cone
   // is only a rival hypothesis: the normals the base-free fit needs are not worth computing.
   const auto& classes = in.classification.candidates;
@@ -153,10 +144,12 @@ std::optional<FittedSolid> fit_cone_any(const SolveInput& in) {
   if (polyhedron || (on_base && on_base_share >= in.cfg.min_inlier_fraction)) return on_base;
   std::optional<FittedSolid> free = fit_cone_without_base(in);
   if (!on_base || !free) return on_base ? on_base : free;
-  return explained_share(in, *free) > on_base_share ? free : on_base;
+  return detail::explained_share(in, *free) > on_base_share ? free : on_base;
 }
 
 }  // namespace
+
+std::optional<FittedSolid> detail::cone_without_base(const SolveInput& in) { return fit_cone_without_base(in); }
 
 std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   auto cone = fit_cone_any(in);

@@ -1,8 +1,12 @@
 // Truncated right circular cone: a seen cap fixes the axis, the straight side its two radii,
 // the other cap (or, unseen, where the side ends) its height.
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <numeric>
 
+#include "geometry/circle.hpp"
+#include "pipeline/cylinder_refine.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
@@ -29,9 +33,81 @@ FittedSolid make_frustum(const Point& base, const Eigen::Vector3d& axis, double 
   return out;
 }
 
-}  // namespace
+// Radii a frustum may have: a taper too slight is a cylinder's, an end too small a cone's apex.
+bool frustum_radii(const SolveInput& in, double radius, double top_radius) {
+  return top_radius > in.cfg.frustum_min_top_share * radius && radius - top_radius > in.cfg.frustum_min_taper * radius;
+}
 
-std::optional<FittedSolid> fit_frustum(const SolveInput& in) {
+// No rim's face seen (a single view of the side alone): the side's axis from its normals, then
+// axis, axis point, radius and taper refined together on the side points; the ends where the
+// points end along the axis.
+std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
+  const auto& samples = in.cloud_normals();
+  if (samples.size() < 20) return std::nullopt;
+  std::vector<std::uint32_t> side(in.cloud.size());
+  std::iota(side.begin(), side.end(), 0u);
+  // Two starts: the second chance's cylinder (its axis refined on the side; a slight taper), and
+  // the cone the side's tangent planes meet in (a strong one; a slight one's apex is ill placed).
+  // The fit on more points within its band wins.
+  std::vector<detail::SideCone> starts;
+  if (const auto cylinder = fit_cylinder_from_side_normals(in))
+    starts.push_back({cylinder->center, cylinder->axes.row(0).transpose(), cylinder->dimensions[0].second, 0.0});
+  if (const auto cone = detail::cone_without_base(in)) {
+    const double radius = cone->dimensions[0].second, height = cone->dimensions[1].second;
+    if (radius > 0.0 && height > 0.0) starts.push_back({cone->center, cone->axes.row(0).transpose(), radius, -radius / height});
+  }
+  const double band = in.cfg.cylinder_refine_band * in.resolution;
+  std::optional<detail::SideCone> cone;
+  std::size_t cone_near = 0;
+  for (const detail::SideCone& start : starts) {
+    const auto fit = detail::refine_side_cone(in.cloud, side, start, std::max(band, 0.25 * start.radius), band,
+                                              static_cast<int>(in.cfg.cylinder_refine_iterations));
+    if (!fit) continue;
+    const double norm = std::sqrt(1.0 + fit->slope * fit->slope);
+    std::size_t near = 0;
+    for (const Point& p : in.cloud) {
+      const Eigen::Vector3d d = p - fit->on_axis;
+      const double h = d.dot(fit->axis);
+      near += std::abs(((d - h * fit->axis).norm() - fit->radius - fit->slope * h) / norm) <= band;
+    }
+    if (!cone || near > cone_near) cone = fit, cone_near = near;
+  }
+  // Seen over a narrow arc (a flat-looking strip, a dark can full of holes) a side fixes no taper:
+  // the same arc a cylinder from its side alone needs.
+  if (!cone || detail::side_arc_degrees(in.cloud, side, *cone, in.cfg.inlier_distance * in.resolution) <
+                   in.cfg.min_side_arc_degrees)
+    return std::nullopt;
+  std::vector<double> along;
+  along.reserve(side.size());
+  for (const Point& p : in.cloud) along.push_back((p - cone->on_axis).dot(cone->axis));
+  const std::size_t trim = along.size() / 500;
+  std::nth_element(along.begin(), along.begin() + trim, along.end());
+  const double lo = along[trim];
+  std::nth_element(along.begin(), along.end() - 1 - trim, along.end());
+  const double hi = along[along.size() - 1 - trim];
+  if (!(hi > lo)) return std::nullopt;
+  // The taper is read along the height: the side must be seen along it, not on a few scan lines.
+  constexpr int kStretches = 10;
+  std::array<std::size_t, kStretches> per_stretch{};
+  for (const Point& p : in.cloud) {
+    const double t = ((p - cone->on_axis).dot(cone->axis) - lo) / (hi - lo);
+    if (t >= 0.0 && t < 1.0) ++per_stretch[static_cast<std::size_t>(t * kStretches)];
+  }
+  int filled = 0;
+  for (std::size_t n : per_stretch) filled += static_cast<double>(n) >= 0.005 * static_cast<double>(in.cloud.size());
+  if (filled < in.cfg.frustum_side_fill * kStretches) return std::nullopt;
+  const double r_lo = cone->radius + cone->slope * lo, r_hi = cone->radius + cone->slope * hi;
+  const double radius = std::max(r_lo, r_hi), top_radius = std::min(r_lo, r_hi);
+  if (!(hi > lo) || !frustum_radii(in, radius, top_radius)) return std::nullopt;
+  FittedSolid out = r_lo >= r_hi
+                        ? make_frustum(cone->on_axis + lo * cone->axis, cone->axis, radius, top_radius, hi - lo)
+                        : make_frustum(cone->on_axis + hi * cone->axis, -cone->axis, radius, top_radius, hi - lo);
+  // Free of any face, the fit has the second chance's freedom and must clear its bar.
+  if (detail::explained_share(in, out) < in.cfg.side_fit_min_inlier_fraction) return std::nullopt;
+  return out;
+}
+
+std::optional<FittedSolid> fit_frustum_on_cap(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
   if (faces.empty()) return std::nullopt;
   const DetectedPlane* cap = in.classification.cap_plane ? &in.planes.planes[*in.classification.cap_plane] : faces[0];
@@ -52,12 +128,21 @@ std::optional<FittedSolid> fit_frustum(const SolveInput& in) {
   if (!(far > 0.0)) return std::nullopt;
   const double near_radius = side->radius, far_radius = side->radius - side->slope * far;
   const double radius = std::max(near_radius, far_radius), top_radius = std::min(near_radius, far_radius);
-  // A taper too slight is a cylinder's, an end too small a cone's apex: neither is a frustum.
-  if (!(top_radius > in.cfg.frustum_min_top_share * radius) ||
-      !(radius - top_radius > in.cfg.frustum_min_taper * radius))
-    return std::nullopt;
+  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
   if (near_radius >= far_radius) return make_frustum(side->centre, side->axis, radius, top_radius, far);
   return make_frustum(side->centre + far * side->axis, -side->axis, radius, top_radius, far);
+}
+
+}  // namespace
+
+std::optional<FittedSolid> fit_frustum(const SolveInput& in) {
+  // The largest flat face may be a flat-looking strip of the side, taken for a rim's face: the
+  // side's own fit is tried as well, and wins where it explains clearly more points
+  // (solve.preferred_margin); a rim seen places the end better.
+  auto on_cap = fit_frustum_on_cap(in);
+  auto from_side = fit_frustum_from_side(in);
+  if (!on_cap || !from_side) return on_cap ? on_cap : from_side;
+  return detail::explained_share(in, *from_side) > detail::explained_share(in, *on_cap) + in.cfg.preferred_margin ? from_side : on_cap;
 }
 
 }  // namespace cloudshape::pipeline

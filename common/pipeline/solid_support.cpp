@@ -270,6 +270,14 @@ std::optional<ConicalSide> fit_conical_side(const SolveInput& in, const Detected
   return out;
 }
 
+double explained_share(const SolveInput& in, const FittedSolid& solid) {
+  const std::size_t step = std::max<std::size_t>(1, in.cloud.size() / 2000);
+  std::size_t n = 0, near = 0;
+  for (std::size_t i = 0; i < in.cloud.size(); i += step, ++n)
+    near += std::abs(solid.signed_distance(in.cloud[i])) <= in.cfg.inlier_distance * in.resolution;
+  return n > 0 ? static_cast<double>(near) / static_cast<double>(n) : 0.0;
+}
+
 double stray_face_share(const std::vector<const DetectedPlane*>& faces,
                         const std::vector<Eigen::Vector3d>& directions, double cos_along) {
   std::size_t all = 0, stray = 0;

@@ -105,6 +105,10 @@ std::vector<SurfaceSample> sample_normals(const PointList& cloud,
 // The direction the normals are all perpendicular to (a cylinder's axis).
 Eigen::Vector3d axis_from_normals(const std::vector<SurfaceSample>& samples);
 
+// A cone from its side alone: the apex where the tangent planes meet, the axis the direction
+// the points vary least in as seen from it (solid_cone.cpp); nothing for a cylinder's side.
+std::optional<FittedSolid> cone_without_base(const SolveInput& in);
+
 // Rows: axis, then two unit vectors completing a right-handed orthonormal frame.
 Eigen::Matrix3d frame_from_axis(const Eigen::Vector3d& axis);
 
@@ -146,6 +150,10 @@ std::size_t points_on_planes_along(const PlaneSegmentation& planes,
 // `directions`: a polyhedron's every face is along one of its face directions, so faces along
 // none (an octahedron's fourth direction, a pyramid's fifth face, a prism's slanted side under a
 // box) say it is only a frame the points were fitted into.
+// Share of (at most ~2000 of) the points within the inlier distance of the solid's surface: a
+// quick rival test inside a fit (the solve's own verification comes after).
+double explained_share(const SolveInput& in, const FittedSolid& solid);
+
 double stray_face_share(const std::vector<const DetectedPlane*>& faces,
                         const std::vector<Eigen::Vector3d>& directions, double cos_along);
 

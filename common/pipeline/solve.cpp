@@ -165,19 +165,43 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // Among the solids explaining nearly the most points, the closest fit wins: on a sparse
   // cloud a cylinder explains a pentagonal prism's points too, but not as closely. The
   // key-point class (first candidate) keeps ties.
+  // A frustum only where no other solid is among them: a cone cut short or a cylinder explains
+  // nearly as much with one parameter fewer.
   const std::pair<FittedSolid, Verification>* chosen = nullptr;
-  for (const auto& f : fitted) {
-    if (f.second.explained < best - cfg.preferred_margin) continue;
-    if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
+  for (bool frustum_too : {false, true}) {
+    for (const auto& f : fitted) {
+      if (f.second.explained < best - cfg.preferred_margin) continue;
+      if (f.first.shape == Shape::frustum && !frustum_too) continue;
+      if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
+    }
+    if (chosen) break;
+  }
+  // Nor where another solid explaining enough points (cfg.min_inlier_fraction) fits them more
+  // closely: the frustum's extra parameter then only stretches its band over more of them (a
+  // ball on a few lidar rings).
+  if (chosen && chosen->first.shape == Shape::frustum) {
+    const std::pair<FittedSolid, Verification>* closer = nullptr;
+    for (const auto& f : fitted) {
+      if (f.first.shape == Shape::frustum || f.second.explained < cfg.min_inlier_fraction ||
+          !(f.second.rms < chosen->second.rms))
+        continue;
+      if (!closer || f.second.explained > closer->second.explained) closer = &f;
+    }
+    if (closer) chosen = closer;
   }
   // The second chance fits axis, position and radius to the points alone, free of any face or
-  // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction).
-  if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
+  // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction). A frustum is
+  // the answer only where no cylinder explains the points: the second chance is tried against it
+  // too, and a cylinder explaining nearly as many (cfg.preferred_margin) stands.
+  const bool frustum = chosen && chosen->first.shape == Shape::frustum;
+  if (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum) {
     if (auto second = fit_cylinder_from_side_normals(input); admissible(second)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+      const double to_beat =
+          !chosen ? 0.0 : frustum ? chosen->second.explained - cfg.preferred_margin : chosen->second.explained;
       if (v.explained >= std::max(cfg.min_inlier_fraction, cfg.side_fit_min_inlier_fraction) &&
-          (!chosen || v.explained > chosen->second.explained)) {
+          (!chosen || v.explained > to_beat)) {
         fitted.emplace_back(std::move(*second), v);
         chosen = &fitted.back();
       }
