@@ -129,6 +129,8 @@ std::optional<SideCone> refine_side_cone(const PointList& cloud,
   return loose ? cone_steps(cloud, side, *loose, band, iterations) : std::nullopt;
 }
 
+double side_distance(const SideCone& c, const Point& p) { return side_offset(c, p).distance; }
+
 double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
                         double band) {
   return side_arc_degrees(cloud, side, SideCone{c.on_axis, c.axis, c.radius, 0.0}, band);

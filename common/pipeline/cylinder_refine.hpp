@@ -45,6 +45,9 @@ std::optional<SideCone> refine_side_cone(const PointList& cloud,
 // tangent to the cylinder) is no evidence of a curved one.
 double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side,
                         const SideCylinder& c, double band);
+// A point's distance from a cone's side (outside positive).
+double side_distance(const SideCone& c, const Point& p);
+
 // The same around a cone's side.
 double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCone& c,
                         double band);

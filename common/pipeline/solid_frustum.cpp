@@ -63,13 +63,8 @@ std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
     const auto fit = detail::refine_side_cone(in.cloud, side, start, std::max(band, 0.25 * start.radius), band,
                                               static_cast<int>(in.cfg.cylinder_refine_iterations));
     if (!fit) continue;
-    const double norm = std::sqrt(1.0 + fit->slope * fit->slope);
     std::size_t near = 0;
-    for (const Point& p : in.cloud) {
-      const Eigen::Vector3d d = p - fit->on_axis;
-      const double h = d.dot(fit->axis);
-      near += std::abs(((d - h * fit->axis).norm() - fit->radius - fit->slope * h) / norm) <= band;
-    }
+    for (const Point& p : in.cloud) near += std::abs(detail::side_distance(*fit, p)) <= band;
     if (!cone || near > cone_near) cone = fit, cone_near = near;
   }
   // Seen over a narrow arc (a flat-looking strip, a dark can full of holes) a side fixes no taper:
@@ -98,7 +93,7 @@ std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
   if (filled < in.cfg.frustum_side_fill * kStretches) return std::nullopt;
   const double r_lo = cone->radius + cone->slope * lo, r_hi = cone->radius + cone->slope * hi;
   const double radius = std::max(r_lo, r_hi), top_radius = std::min(r_lo, r_hi);
-  if (!(hi > lo) || !frustum_radii(in, radius, top_radius)) return std::nullopt;
+  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
   FittedSolid out = r_lo >= r_hi
                         ? make_frustum(cone->on_axis + lo * cone->axis, cone->axis, radius, top_radius, hi - lo)
                         : make_frustum(cone->on_axis + hi * cone->axis, -cone->axis, radius, top_radius, hi - lo);

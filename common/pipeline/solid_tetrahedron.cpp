@@ -96,9 +96,8 @@ FittedSolid make_tetrahedron(const std::array<Point, 4>& vertices, double regula
   const double mean = edge_sum / 6.0;
   out.dimensions.emplace_back("edge", mean);
   out.vertices.assign(vertices.begin(), vertices.end());
-  out.regular = std::all_of(edges.begin(), edges.end(), [&](double e) {
-    return std::abs(e - mean) <= regular_tolerance * mean;
-  });
+  out.regular = std::all_of(edges.begin(), edges.end(),
+                            [&](double e) { return std::abs(e - mean) <= regular_tolerance * mean; });
   const Eigen::Vector3d x = (vertices[0] - out.center).normalized();
   Eigen::Vector3d y = vertices[1] - out.center;
   y = (y - y.dot(x) * x).normalized();
@@ -133,7 +132,7 @@ std::optional<std::array<Point, 4>> from_four_faces(const std::vector<const Dete
 // points end along its normal. Every hidden face shares an edge with every seen one, and
 // the seen faces are whole up to that edge, so the points do reach it.
 std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
-                                                    const std::vector<const DetectedPlane*>& seen) {
+                                           const std::vector<const DetectedPlane*>& seen) {
   // Two faces map onto canonical 0, 1 by a rotation either way round; three faces only in
   // one of their two cyclic orders (the other is a mirror image).
   std::array<int, 4> slots{0, 1, 2, 3};
@@ -162,8 +161,7 @@ std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
     std::array<int, 3> three{};
     for (int f = 0, k = 0; f < 4; ++f)
       if (f != skip) three[k++] = f;
-    const auto v =
-        geometry::intersect_three_planes(planes[three[0]], planes[three[1]], planes[three[2]]);
+    const auto v = geometry::intersect_three_planes(planes[three[0]], planes[three[1]], planes[three[2]]);
     if (!v) return std::nullopt;
     vertices[skip] = *v;
   }
@@ -175,14 +173,13 @@ std::optional<std::array<Point, 4>> from_seen_faces(const SolveInput& in,
 
 // Any tetrahedron seen whole: its four largest faces, pairwise far from parallel, bound it when
 // each one's plane leaves the opposite corner inside.
-std::optional<std::array<Point, 4>> from_largest_faces(
-    const std::vector<const DetectedPlane*>& faces, double cos_parallel) {
+std::optional<std::array<Point, 4>> from_largest_faces(const std::vector<const DetectedPlane*>& faces,
+                                                       double cos_parallel) {
   if (faces.size() < 4) return std::nullopt;
   const std::vector<const DetectedPlane*> four(faces.begin(), faces.begin() + 4);
   for (std::size_t a = 0; a < 4; ++a)
     for (std::size_t b = a + 1; b < 4; ++b)
-      if (std::abs(four[a]->plane.normal.dot(four[b]->plane.normal)) > cos_parallel)
-        return std::nullopt;
+      if (std::abs(four[a]->plane.normal.dot(four[b]->plane.normal)) > cos_parallel) return std::nullopt;
   const auto vertices = from_four_faces(four);
   if (!vertices) return std::nullopt;
   for (int f = 0; f < 4; ++f)
@@ -220,17 +217,15 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   std::optional<std::array<Point, 4>> vertices;
   if (seen.size() == 4) vertices = from_four_faces(seen);
   // An irregular one meets at other angles: its four faces, when the cloud shows them all.
-  if (!vertices)
-    vertices = from_largest_faces(
-        faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0);
+  if (!vertices) vertices = from_largest_faces(faces, cos_parallel);
   // Two or three faces seen: at a regular one's angles, the regular tetrahedron they fix; any
   // tetrahedron from the two largest when both are whole triangles. An irregular one may meet at
   // a regular one's angles too: a regular reading whose faces the seen points do not fill
   // (within solve.triangle_fill_tolerance) gives way to the other where that fills them closer.
   if (!vertices) {
     const auto regular = seen.size() >= 2 ? from_seen_faces(in, seen) : std::nullopt;
-    const auto any = detail::tetrahedron_from_two_faces(
-        in, faces, std::cos(in.cfg.parallel_degrees * 3.14159265358979323846 / 180.0));
+    const auto any = detail::tetrahedron_from_two_faces(in, faces, cos_parallel);
     vertices = regular ? regular : any;
     if (regular && any) {
       const double regular_error = fill_error(in, *regular, seen);
@@ -243,14 +238,12 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   std::vector<Eigen::Vector3d> normals;
   for (const geometry::Plane& p : face_planes(*vertices)) normals.push_back(p.normal);
   const auto on_faces = detail::points_on_planes_along(in.planes, normals, in.cfg.parallel_degrees);
-  if (static_cast<double>(on_faces) <
-      in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
+  if (static_cast<double>(on_faces) < in.cfg.polyhedron_face_share * static_cast<double>(in.cloud.size()))
     return std::nullopt;
   const double cos_along = std::cos(in.cfg.stray_face_degrees * 3.14159265358979323846 / 180.0);
   // A tetrahedron has no two parallel faces: an octahedron's opposite faces or a pyramid's fifth
   // (along none of its four outward normals) say the four were picked from a solid with more.
-  if (detail::stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share)
-    return std::nullopt;
+  if (detail::stray_face_share(faces, normals, cos_along) > in.cfg.stray_face_share) return std::nullopt;
   return make_tetrahedron(*vertices, in.cfg.regular_tolerance);
 }
 

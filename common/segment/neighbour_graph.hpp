@@ -2,6 +2,8 @@
 // voxel otherwise) with surface normals, edges between neighbours that are not across a depth jump.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -32,6 +34,12 @@ struct NeighbourGraph {
     for (std::uint32_t e = adjacency_begin[n]; e < adjacency_begin[n + 1]; ++e) f(adjacency[e]);
   }
 };
+
+// Organized clouds: two pixels or cells lie on one surface when their ranges (distances from the
+// sensor) differ by at most depth_jump of the nearer one.
+inline bool same_surface(double range_a, double range_b, double depth_jump) {
+  return std::abs(range_a - range_b) <= depth_jump * std::min(range_a, range_b);
+}
 
 // Organized cloud (grid.organized()): cells of s x s pixels, s chosen so that about
 // cfg.target_nodes cells hold points; a cell's node is one of its pixels; 8-neighbour cells are

@@ -130,9 +130,7 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
     }
   }
 
-  const auto same_surface = [&](double ra, double rb) {
-    return std::abs(ra - rb) <= cfg.depth_jump * std::min(ra, rb);
-  };
+  const auto same_surface = [&](double ra, double rb) { return segment::same_surface(ra, rb, cfg.depth_jump); };
   // 8-neighbour cells, in the order a scan that links each cell to its later neighbours gives.
   constexpr int kOrder[8][2] = {{-1, -1}, {0, -1}, {1, -1}, {-1, 0}, {1, 0}, {0, 1}, {1, 1}, {-1, 1}};
   std::ptrdiff_t offsets[8];

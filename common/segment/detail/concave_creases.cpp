@@ -29,10 +29,7 @@ std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cel
         const std::ptrdiff_t x = cx + k * d[0], y = cy + k * d[1];
         if (x < 0 || y < 0 || x >= cells_x || y >= cells_y) return kNoNode;
         const std::uint32_t m = cells.node_of_cell[static_cast<std::size_t>(y * cells_x + x)];
-        return m != kNoNode && std::abs(range - cells.range[m]) <=
-                                   cfg.depth_jump * std::min(range, cells.range[m])
-                   ? m
-                   : kNoNode;
+        return m != kNoNode && same_surface(range, cells.range[m], cfg.depth_jump) ? m : kNoNode;
       };
       for (const auto& d : kDirections) {
         const std::uint32_t p = node_at(-r, d), q = node_at(r, d);
