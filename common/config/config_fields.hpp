@@ -177,7 +177,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("prism_outline_cell", c.prism_outline_cell);
   f("prism_min_turn_degrees", c.prism_min_turn_degrees);
   f("prism_corner_cut_cells", c.prism_corner_cut_cells);
-  f("prism_merge_rms_cells", c.prism_merge_rms_cells);
+  f("prism_border_band_cells", c.prism_border_band_cells);
+  f("prism_join_evidence", c.prism_join_evidence);
   f("prism_guessed_slack", c.prism_guessed_slack);
 }
 

@@ -185,7 +185,8 @@ struct SolveConfig {
   double prism_outline_cell = 2.0;       // a cap's outline (a prism seen from one side) is traced on cells this wide (resolutions)
   double prism_min_turn_degrees = 20.0;  // a prism's outline turns at least this much at every corner: shallower is a curved side cut into strips
   double prism_corner_cut_cells = 3.0;   // a cap-outline side no face shows, shorter than this (outline cells): a rounded corner, its neighbours meet
-  double prism_merge_rms_cells = 0.5;    // neighbouring unseen cap-outline sides whose border fits one line within this RMS (outline cells) are one
+  double prism_border_band_cells = 2.0;  // cap border points this near the outline (outline cells) place its sides
+  double prism_join_evidence = 2.0;      // neighbouring unseen cap-outline sides are one unless two lines fit their border better by this many variances per log
   double prism_guessed_slack = 2.0;      // with a side only the cap's border shows, a pentagon regular within this multiple of the tolerances is pentagonal_prism's
 };
 

@@ -11,6 +11,7 @@
 
 #include "geometry/convex_hull.hpp"
 #include "geometry/polygon.hpp"
+#include "pipeline/outline_fit.hpp"
 #include "pipeline/prism_outline.hpp"
 #include "pipeline/solids.hpp"
 
@@ -28,7 +29,6 @@ struct SideRun {
   double weight = 0.0;  // points behind the line
   bool seen = true;     // a side face's; false for a side only a cap's border shows
   double hull_area = 0.0;  // of its points in the plane of the side and the axis
-  std::vector<Eigen::Vector2d> border;  // an unseen side's: the cap's border points its line is fitted to
   Eigen::Vector2d tangent() const { return {-n.y(), n.x()}; }
   Eigen::Vector2d start() const { return d * n + t_lo * tangent(); }
   Eigen::Vector2d end() const { return d * n + t_hi * tangent(); }
@@ -38,6 +38,7 @@ struct AxisChoice {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
   std::vector<const DetectedPlane*> sides, caps;
   std::size_t points = 0;
+  bool cap_reading = false;  // a face's normal with three sides or more, read from the cap's outline
 };
 
 // A right prism has two cap planes, at its two ends: a face along the axis anywhere between
@@ -61,8 +62,9 @@ bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
 // Axis hypotheses: every face's normal (a cap) and every two faces' common perpendicular (two
 // sides). Three sides give an outline of their own: the hypothesis whose sides and caps hold most
 // points is tried first. With fewer sides only a cap can (its traced border, ring_from_cap), so
-// each face's normal with one or two sides follows, most points first: a view of a cap and one
-// side has two such readings (either face the cap), and the outline decides between them.
+// each face's normal with a side follows, most points first (with three sides or more too: a
+// side RANSAC cut into parallel strips closes no outline, and the cap's still does): a view of a
+// cap and one side has two such readings (either face the cap), and the outline decides.
 std::vector<AxisChoice> choose_axes(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
   const config::SolveConfig& cfg = in.cfg;
   const double sin_perp = std::sin(cfg.perpendicular_degrees * kPi / 180.0);
@@ -88,17 +90,19 @@ std::vector<AxisChoice> choose_axes(const SolveInput& in, const std::vector<cons
       else continue;
       c.points += f->inliers.size();
     }
-    if (c.sides.size() >= 3) {
-      if ((!best || c.points > best->points) && caps_at_ends(in, c)) best = std::move(c);
-    } else if (along_face && !c.sides.empty() && caps_at_ends(in, c)) {
-      from_cap.push_back(std::move(c));
+    if (!caps_at_ends(in, c)) continue;
+    if (along_face && !c.sides.empty()) {
+      from_cap.push_back(c);
+      from_cap.back().cap_reading = c.sides.size() >= 3;
     }
+    if (c.sides.size() >= 3 && (!best || c.points > best->points)) best = std::move(c);
   }
   std::stable_sort(from_cap.begin(), from_cap.end(),
                    [](const AxisChoice& a, const AxisChoice& b) { return a.points > b.points; });
   std::vector<AxisChoice> out;
   if (best) out.push_back(std::move(*best));
-  out.insert(out.end(), std::make_move_iterator(from_cap.begin()), std::make_move_iterator(from_cap.end()));
+  for (AxisChoice& c : from_cap)
+    if (!best || c.axis != out.front().axis) out.push_back(std::move(c));
   return out;
 }
 
@@ -261,64 +265,27 @@ bool is_rectangle(const geometry::Polygon2& p, double degrees) {
   return true;
 }
 
-// Total least-squares line through points, as a side: normal turned to `outward`.
-std::optional<SideRun> fit_line(const std::vector<Eigen::Vector2d>& pts, const Eigen::Vector2d& outward) {
-  if (pts.size() < 5) return std::nullopt;
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (const auto& p : pts) mean += p / static_cast<double>(pts.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const auto& p : pts) cov.noalias() += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(cov);
-  SideRun r;
-  r.n = solver.eigenvectors().col(0).normalized();
-  if (r.n.dot(outward) < 0) r.n = -r.n;
-  r.d = r.n.dot(mean);
-  r.weight = static_cast<double>(pts.size());
-  return r;
-}
-
-// Root-mean-square distance of points from a side's line.
-double rms_off_line(const std::vector<Eigen::Vector2d>& pts, const SideRun& r) {
-  double sum = 0.0;
-  for (const auto& p : pts) sum += (p.dot(r.n) - r.d) * (p.dot(r.n) - r.d);
-  return std::sqrt(sum / static_cast<double>(std::max<std::size_t>(1, pts.size())));
-}
-
-// The traced outline bends where the cap's border is ragged, cutting one hidden side into
-// several: two neighbouring sides no face shows whose border points lie on one line, within
-// max_rms (about the grid's own rounding) in the root mean square, are one side. The closest
-// such pair joins first, until none is left.
-std::vector<SideRun> merge_unseen_runs(std::vector<SideRun> ring, double max_rms) {
-  while (ring.size() > 3) {
-    std::size_t best = ring.size();
-    double best_rms = max_rms;
-    std::optional<SideRun> joined;
-    for (std::size_t i = 0; i < ring.size(); ++i) {
-      const std::size_t j = (i + 1) % ring.size();
-      if (ring[i].seen || ring[j].seen || ring[i].weight <= 0.0 || ring[j].weight <= 0.0) continue;
-      std::vector<Eigen::Vector2d> pts = ring[i].border;
-      pts.insert(pts.end(), ring[j].border.begin(), ring[j].border.end());
-      auto line = fit_line(pts, ring[i].n + ring[j].n);
-      if (!line) continue;
-      const double rms = rms_off_line(pts, *line);
-      if (!(rms <= best_rms)) continue;
-      line->seen = false;
-      line->t_lo = ring[i].start().dot(line->tangent());
-      line->t_hi = ring[j].end().dot(line->tangent());
-      line->border = std::move(pts);
-      best = i, best_rms = rms, joined = std::move(line);
-    }
-    if (best == ring.size()) break;
-    const std::size_t j = (best + 1) % ring.size();
-    ring[best] = std::move(*joined);
-    ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(j));
+// Which seen run lies along the outline's side from a to b with outward normal `outward`: parallel,
+// within two cells of it, over at least half its length (coplanar sides share a line: the run
+// must lie along this side, not another on it); the heaviest such, or none.
+std::optional<std::size_t> run_along(const std::vector<SideRun>& runs, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                                     const Eigen::Vector2d& outward, double cos_parallel, double cell) {
+  const double len = (b - a).norm();
+  std::optional<std::size_t> best;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const SideRun& r = runs[i];
+    if (r.n.dot(outward) < cos_parallel || std::abs(r.d - r.n.dot(0.5 * (a + b))) > 2.0 * cell) continue;
+    const double ta = a.dot(r.tangent()), tb = b.dot(r.tangent());
+    if (std::min(r.t_hi, std::max(ta, tb)) - std::max(r.t_lo, std::min(ta, tb)) < 0.5 * len) continue;
+    if (!best || r.weight > runs[*best].weight) best = i;
   }
-  return ring;
+  return best;
 }
 
 // The outline from a cap (a single view shows one whole: nothing of a right prism stands above
-// its cap): the cap's traced outline gives the corners roughly, and each side its line, from
-// the side face seen along it, else from the cap's border points along it.
+// its cap): the cap's traced outline gives the sides roughly; their lines are refitted to the
+// cap's border and the bends its raggedness makes are joined (fit_outline_sides), then each side
+// a face is seen along takes that face's line and the rest are fitted again around them.
 std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const DetectedPlane& cap,
                                                   const Eigen::Vector3d& u, const Eigen::Vector3d& v,
                                                   const std::vector<SideRun>& runs, std::size_t& matched) {
@@ -327,79 +294,90 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
   for (std::uint32_t i : cap.boundary) border.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
   const double cell = in.cfg.prism_outline_cell * in.resolution;
   const geometry::Polygon2 rough = detail::face_outline_polygon(pts, cell, 1.5 * cell);
-  if (rough.size() < 3) return std::nullopt;
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
-  std::vector<SideRun> ring;
   matched = 0;
+  if (rough.size() < 3) return std::nullopt;
+  detail::OutlineFitParameters fit;
+  fit.cell = cell;
+  fit.band_cells = in.cfg.prism_border_band_cells;
+  fit.min_length_cells = in.cfg.prism_corner_cut_cells;
+  fit.join_evidence = in.cfg.prism_join_evidence;
+  std::vector<detail::OutlineSide> sides;
   for (std::size_t k = 0; k < rough.size(); ++k) {
     const Eigen::Vector2d a = rough[k], b = rough[(k + 1) % rough.size()];
     const Eigen::Vector2d dir = (b - a).normalized();
-    const Eigen::Vector2d outward(dir.y(), -dir.x());
-    const double len = (b - a).norm();
-    const SideRun* best = nullptr;
-    for (const SideRun& r : runs) {
-      if (r.n.dot(outward) < cos_parallel || std::abs(r.d - r.n.dot(0.5 * (a + b))) > 2.0 * cell) continue;
-      // Coplanar sides share a line: the run must lie along this edge, not another on it.
-      const double ta = a.dot(r.tangent()), tb = b.dot(r.tangent());
-      if (std::min(r.t_hi, std::max(ta, tb)) - std::max(r.t_lo, std::min(ta, tb)) < 0.5 * len) continue;
-      if (!best || r.weight > best->weight) best = &r;
+    detail::OutlineSide s;
+    s.n = Eigen::Vector2d(dir.y(), -dir.x());
+    s.d = s.n.dot(a);
+    sides.push_back(std::move(s));
+  }
+  sides = detail::fit_outline_sides(std::move(sides), border, fit);
+  if (sides.size() < 3) return std::nullopt;
+
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const Eigen::Vector2d& a = sides[(k + sides.size() - 1) % sides.size()].end;
+    const auto run = run_along(runs, a, sides[k].end, sides[k].n, cos_parallel, cell);
+    if (!run) continue;
+    sides[k].n = runs[*run].n;
+    sides[k].d = runs[*run].d;
+    sides[k].fixed = true;
+    sides[k].label = static_cast<int>(*run);
+  }
+  // One face seen along two neighbouring sides: they are one.
+  for (std::size_t k = 0; sides.size() > 3 && k < sides.size();) {
+    const std::size_t next = (k + 1) % sides.size();
+    if (sides[k].fixed && sides[next].fixed && sides[k].label == sides[next].label) {
+      sides[k].end = sides[next].end;
+      sides.erase(sides.begin() + static_cast<std::ptrdiff_t>(next));
+      if (next < k) --k;
+    } else {
+      ++k;
     }
-    if (best) {
-      ring.push_back(*best);
-      ++matched;
+  }
+  // Between two faces seen whose points end near where their planes meet (chain_runs' test), a
+  // side only the border shows is the grid's rounding of their corner.
+  const double corner_gap = in.cfg.prism_corner_gap * in.resolution;
+  for (std::size_t k = 0; sides.size() > 3 && k < sides.size();) {
+    const std::size_t prev = (k + sides.size() - 1) % sides.size(), next = (k + 1) % sides.size();
+    if (!sides[k].fixed && sides[prev].fixed && sides[next].fixed) {
+      const SideRun& a = runs[static_cast<std::size_t>(sides[prev].label)];
+      const SideRun& b = runs[static_cast<std::size_t>(sides[next].label)];
+      const auto corner = intersect(a, b);
+      if (corner && (a.end() - *corner).norm() <= corner_gap && (b.start() - *corner).norm() <= corner_gap) {
+        sides[prev].end = *corner;
+        sides.erase(sides.begin() + static_cast<std::ptrdiff_t>(k));
+        continue;
+      }
+    }
+    ++k;
+  }
+  for (const auto& s : sides) matched += s.fixed ? 1 : 0;
+  if (matched == 0) return std::nullopt;
+  sides = detail::fit_outline_sides(std::move(sides), border, fit);
+  if (sides.size() < 3) return std::nullopt;
+
+  std::vector<SideRun> ring;
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const detail::OutlineSide& s = sides[k];
+    if (s.fixed) {
+      ring.push_back(runs[static_cast<std::size_t>(s.label)]);
       continue;
     }
-    std::vector<Eigen::Vector2d> near;
-    for (const auto& p : border) {
-      const double t = (p - a).dot(dir);
-      if (t < 0.15 * len || t > 0.85 * len) continue;
-      if (std::abs((p - a).dot(outward)) <= 1.5 * cell) near.push_back(p);
-    }
-    auto line = fit_line(near, outward);
-    if (!line) {
-      SideRun r;
-      r.n = outward;
-      r.d = outward.dot(a);
-      line = r;
-    }
-    line->border = std::move(near);
-    line->seen = false;
-    line->t_lo = a.dot(line->tangent());
-    line->t_hi = b.dot(line->tangent());
-    ring.push_back(*line);
+    SideRun r;
+    r.n = s.n;
+    r.d = s.d;
+    r.seen = false;
+    r.weight = static_cast<double>(s.points.size());
+    r.t_lo = sides[(k + sides.size() - 1) % sides.size()].end.dot(r.tangent());
+    r.t_hi = s.end.dot(r.tangent());
+    ring.push_back(std::move(r));
   }
-  // The grid rounds corners into short edges of their own: a side no face shows that is shorter
-  // than a few cells between its neighbours, or that no border points line while its neighbours
-  // meet within its length of it (the traced outline's chord across a rounded corner; a plus
-  // sign's arm ends between parallel sides), is such a cut, and its neighbours meet instead.
-  for (bool cut = true; cut && ring.size() > 3;) {
-    cut = false;
-    std::size_t shortest = ring.size();
-    double shortest_len = std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < ring.size(); ++k) {
-      if (ring[k].seen) continue;
-      const SideRun& prev = ring[(k + ring.size() - 1) % ring.size()];
-      const SideRun& next = ring[(k + 1) % ring.size()];
-      const auto a = intersect(prev, ring[k]);
-      const auto b = intersect(ring[k], next);
-      const double len = a && b ? (*b - *a).norm() : 0.0;
-      if (!(len < in.cfg.prism_corner_cut_cells * cell)) {
-        if (ring[k].weight > 0.0 || !a || !b) continue;
-        const auto meet = intersect(prev, next);
-        if (!meet || (*meet - 0.5 * (*a + *b)).norm() > len) continue;
-      }
-      if (len < shortest_len) shortest = k, shortest_len = len;
-    }
-    if (shortest < ring.size()) {
-      ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(shortest));
-      cut = true;
-    }
-  }
-  return merge_unseen_runs(std::move(ring), in.cfg.prism_merge_rms_cells * cell);
+  return ring;
 }
 
 // The prism along one axis hypothesis, or nothing when its outline or faces are no prism's.
-std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoice& choice) {
+// `closed`: set when the sides' own stretches closed an outline.
+std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoice& choice, bool& closed) {
   const Eigen::Vector3d axis = detail::extrusion_axis(choice.sides, choice.caps, choice.axis);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
@@ -413,6 +391,7 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // Every side seen: the sides' own stretches, ordered around. Else a cap's outline, with the
   // sides seen where they are (a single view); at least one side besides the cap.
   auto chained = chain_runs(runs, in.cfg.prism_corner_gap * in.resolution);
+  closed = closed || chained.has_value();
   bool from_cap = false;
   if (!chained && !choice.caps.empty()) {
     std::size_t matched = 0;
@@ -516,8 +495,13 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
 
 std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   const auto faces = detail::faces_by_size(in.planes);
-  for (const AxisChoice& choice : choose_axes(in, faces))
-    if (auto solid = fit_prism_along(in, choice)) return solid;
+  // Where the sides around some axis closed an outline, they told the cross-section: a cap's
+  // reading of three sides or more is only for sides that close none.
+  bool closed = false;
+  for (const AxisChoice& choice : choose_axes(in, faces)) {
+    if (choice.cap_reading && closed) continue;
+    if (auto solid = fit_prism_along(in, choice, closed)) return solid;
+  }
   return std::nullopt;
 }
 
