@@ -317,7 +317,15 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
-    const std::size_t inside = standing_inside(g, fit.inliers, contact, fit.plane, cell, cfg.structure_margin_cells,
+    // The plane beyond an object's shadow is cut off from the part in front of it: every node in
+    // the plane's band shows where the plane reaches.
+    std::vector<std::uint32_t> coplanar;
+    {
+      const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
+      for (std::uint32_t n : active)
+        if (inlier[n] || is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) coplanar.push_back(n);
+    }
+    const std::size_t inside = standing_inside(g, coplanar, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
     const bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
     const bool encloses = !supports && from_inside && g.viewpoint && encloses_viewer(g, active, inlier, fit, cfg);

@@ -21,7 +21,8 @@ struct StructurePlane {
 // connected part (sets `removed`) while it holds cfg.structure_min_share of the nodes, at least
 // cfg.structure_min_standing nodes stand on its open side (the viewer's, else the side most other
 // nodes are on) and meet it inside (plane cfg.structure_margin_cells beyond where their surface,
-// followed down its own slope, meets the plane, in all four in-plane directions), and its area is
+// followed down its own slope, meets the plane, in all four in-plane directions; every node in the
+// plane's band counts there, the table beyond an object's shadow too), and its area is
 // at least cfg.structure_reach times their footprint: a solid's own face has its solid behind it,
 // covers no more than the solid does, and meets the solid's other faces at its own edges (a
 // cone's side leans over its base, but meets it at the base's edge). Deterministic for cfg.seed,
