@@ -37,6 +37,25 @@ class IndexRadiusSet {
   std::vector<std::uint32_t>& out_;
 };
 
+// Radius search that stops at the first point within the radius.
+class AnyRadiusSet {
+ public:
+  explicit AnyRadiusSet(double radius) : radius_(radius) {}
+  void init() { found_ = false; }
+  std::size_t size() const { return found_ ? 1 : 0; }
+  bool full() const { return true; }
+  bool addPoint(double dist, std::uint32_t) {
+    found_ = found_ || dist < radius_;
+    return !found_;
+  }
+  double worstDist() const { return radius_; }
+  bool found() const { return found_; }
+
+ private:
+  const double radius_;
+  bool found_ = false;
+};
+
 }  // namespace
 
 struct KdTree::Index {
@@ -73,6 +92,14 @@ void KdTree::radius(const Point& query, double radius, std::vector<std::uint32_t
   params.sorted = false;
   IndexRadiusSet found(radius * radius, indices);
   index_->tree.radiusSearchCustomCallback(query.data(), found, params);
+}
+
+bool KdTree::any_within(const Point& query, double radius) const {
+  nanoflann::SearchParams params;
+  params.sorted = false;
+  AnyRadiusSet found(radius * radius);
+  index_->tree.radiusSearchCustomCallback(query.data(), found, params);
+  return found.found();
 }
 
 }  // namespace cloudshape::geometry

@@ -27,6 +27,9 @@ class KdTree {
   // Indices of all points within `radius` of `query`, in no particular order.
   void radius(const Point& query, double radius, std::vector<std::uint32_t>& indices) const;
 
+  // Whether any point lies within `radius` of `query` (the same test as radius(): stops at the first).
+  bool any_within(const Point& query, double radius) const;
+
   const PointList& points() const { return points_; }
 
  private:

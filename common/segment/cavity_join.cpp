@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numeric>
 
@@ -36,20 +37,13 @@ void join_cavities(const NeighbourGraph& g, std::vector<std::int32_t>& label, co
   // The container is the segment with the most nodes near the cavity: its rim is often cut from
   // the cavity by depth jumps (the far inner wall behind the near rim), so graph edges miss it.
   // A cavity joined to another piece of the inside (its floor) is still a cavity and looks again.
-  PointList nodes;
-  std::vector<std::uint32_t> node_id;
-  for (std::uint32_t n = 0; n < g.size(); ++n) {
-    if (label[n] < 0) continue;
-    nodes.push_back(g.nodes[n]);
-    node_id.push_back(n);
-  }
-  std::unique_ptr<geometry::KdTree> tree;
+  // Near: within the gap of some node of the cavity, asked of a tree over the cavity's own nodes
+  // for each node in its box widened by the gap (one query per node, not one radius search,
+  // hundreds of nodes each, per cavity node).
   std::vector<std::int32_t> group(static_cast<std::size_t>(segments));
   std::iota(group.begin(), group.end(), 0);
-  std::vector<std::uint32_t> near;
-  std::vector<char> counted(g.size(), 0);
   std::vector<std::uint32_t> contacts(static_cast<std::size_t>(segments), 0);
-  std::vector<std::uint32_t> touched;
+  PointList own_points;
   for (std::int32_t s = 0; s < segments; ++s) {
     std::int32_t cur = group[s];
     for (std::int32_t round = 0; round < segments; ++round) {
@@ -58,23 +52,29 @@ void join_cavities(const NeighbourGraph& g, std::vector<std::int32_t>& label, co
           concavity(g, own) < cfg.cavity_concavity) {
         break;
       }
-      if (!tree) tree = std::make_unique<geometry::KdTree>(nodes);
       double spacing = 0.0;
       for (std::uint32_t n : own) spacing += g.spacing[n];
       spacing /= static_cast<double>(own.size());
-      std::fill(contacts.begin(), contacts.end(), 0u);
-      touched.clear();
+      const double gap = cfg.cavity_gap * spacing;
+      own_points.clear();
+      Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
       for (std::uint32_t n : own) {
-        tree->radius(g.nodes[n], cfg.cavity_gap * spacing, near);
-        for (std::uint32_t k : near) {
-          const std::uint32_t m = node_id[k];
-          if (group[label[m]] == cur || counted[m]) continue;
-          counted[m] = 1;
-          touched.push_back(m);
-          ++contacts[group[label[m]]];
-        }
+        own_points.push_back(g.nodes[n]);
+        lo = lo.cwiseMin(g.nodes[n]);
+        hi = hi.cwiseMax(g.nodes[n]);
       }
-      for (std::uint32_t m : touched) counted[m] = 0;
+      // Widened a little more than the gap: the box only spares queries, the tree decides.
+      const Eigen::Vector3d reach = Eigen::Vector3d::Constant(gap * (1.0 + 1e-6) + 1e-12);
+      lo -= reach;
+      hi += reach;
+      const geometry::KdTree tree(own_points);
+      std::fill(contacts.begin(), contacts.end(), 0u);
+      for (std::uint32_t m = 0; m < g.size(); ++m) {
+        if (label[m] < 0 || group[label[m]] == cur) continue;
+        const Point& p = g.nodes[m];
+        if ((p.array() < lo.array()).any() || (p.array() > hi.array()).any()) continue;
+        if (tree.any_within(p, gap)) ++contacts[group[label[m]]];
+      }
       const auto best = std::max_element(contacts.begin(), contacts.end());
       if (*best == 0) break;
       const auto other = static_cast<std::int32_t>(best - contacts.begin());

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "geometry/kdtree.hpp"
@@ -66,6 +67,29 @@ TEST(KdTree, RadiusFindsExactlyThePointsInside) {
   std::vector<std::uint32_t> idx;
   tree.radius(Point(5, 5, 0), 1.01, idx);
   EXPECT_EQ(idx.size(), 5u);  // the point and its four axis neighbours
+}
+
+// any_within is radius() not empty, also at the radius' edge: a query exactly a point's
+// distance away is not within (strictly less, as radius() counts).
+TEST(KdTree, AnyWithinIsWhetherRadiusFindsAny) {
+  std::mt19937_64 rng(11);
+  const PointList pts = cube_points(rng, 3000);
+  const KdTree tree(pts);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  std::vector<std::uint32_t> found;
+  std::size_t hits = 0;
+  for (int q = 0; q < 400; ++q) {
+    const Point query(u(rng), u(rng), u(rng));
+    const double r = 0.01 + 0.001 * q;
+    tree.radius(query, r, found);
+    EXPECT_EQ(tree.any_within(query, r), !found.empty()) << "query " << q;
+    hits += found.empty() ? 0 : 1;
+  }
+  EXPECT_GT(hits, 50u);
+  EXPECT_LT(hits, 350u);
+  const KdTree one(PointList{Point(1.0, 0.0, 0.0)});
+  EXPECT_FALSE(one.any_within(Point::Zero(), 1.0));
+  EXPECT_TRUE(one.any_within(Point::Zero(), std::nextafter(1.0, 2.0)));
 }
 
 TEST(KdTree, KIsClampedToTheCloud) {
