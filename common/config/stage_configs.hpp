@@ -123,7 +123,7 @@ struct SegmentConfig {
   std::int64_t structure_hypotheses = 200; // RANSAC hypotheses per structure plane
   double contact_noise_sigmas = 3.0;       // an object's points within this many of a structure plane's own noise deviations of it, over its footprint, are the plane's (the cells at the object's foot hold both) ...
   double contact_min_band = 0.1;           // ... the band at least this many of its node spacings (a noise-free plane has no noise of its own)
-  double remainder_refine = 2.0;           // unorganized: what structure leaves is re-gridded when that makes its voxel at least this many times finer
+  double remainder_refine = 2.0;           // unorganized: what structure leaves is re-gridded when the node budget alone would make its voxel at least this many times finer
   double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
   double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes
   std::int64_t min_object_nodes = 30;      // segments with fewer nodes are clutter

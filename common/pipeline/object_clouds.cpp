@@ -11,7 +11,10 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
   ObjectClouds out;
   segment::SceneSegmentation scene = segment::segment_scene(raw, grid, seg, pool);
   out.viewpoint = scene.viewpoint;
-  if (scene.objects.empty() && !raw.empty()) {
+  // Nothing segmented is one object of every point (a thin sliver, a cloud too small for the
+  // graph), unless structure was taken out: then the cloud is structure alone, and all of it as
+  // one object would be a wall-sized wrong solid.
+  if (scene.objects.empty() && scene.structure.empty() && !raw.empty()) {
     scene.objects.emplace_back(raw.size());
     std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);
   }

@@ -36,7 +36,8 @@ std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, con
     rest.push_back(points[i]);
   }
   const double voxel = std::max(finest_voxel(rest, pool), for_budget);
-  if (!(voxel > 0.0) || voxel * cfg.remainder_refine > coarse) return std::nullopt;
+  // The sampling only bounds how fine: any finer voxel than the scene graph's helps a small target.
+  if (!(voxel > 0.0) || voxel >= coarse) return std::nullopt;
   out.graph = build_voxel_graph(rest, voxel, std::nullopt, cfg, pool);
   orient_to_viewpoint(out.graph, graph.viewpoint);
   return out;

@@ -21,9 +21,12 @@ struct RemainderGraph {
 // The points of the nodes not `removed`, as a voxel graph of their own whose voxel edge is
 // chosen so that they fill about cfg.target_nodes nodes (`graph`'s median node spacing times the
 // square root of kept nodes over the budget: a surface fills voxels with the inverse square of
-// the edge), never finer than finest_voxel (their sampling). None when that voxel is not at
-// least cfg.remainder_refine times finer than that spacing: the graph already holds the
-// remainder at its resolution. Keeps `graph`'s viewpoint (normals towards it).
+// the edge), never finer than finest_voxel (their sampling). None when the budget's voxel is not
+// at least cfg.remainder_refine times finer than that spacing (the graph already holds the
+// remainder at its resolution: an isolated solid), or the sampling allows no finer voxel at all.
+// A remainder the budget would grid much finer is gridded as finely as its sampling allows: a
+// lidar frame's ball among its ring leftovers, whose sampling floor is 1.9 times finer than the
+// scene graph, would otherwise be a few nodes. Keeps `graph`'s viewpoint (normals towards it).
 std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, const NeighbourGraph& graph,
                                                     const std::vector<char>& removed,
                                                     const config::SegmentConfig& cfg,

@@ -15,10 +15,10 @@
 namespace cloudshape {
 namespace {
 
-// Tolerance (issue 10): radius within 5%, centre within 10% of the radius, in at least 40% of the
-// frames that see the sphere: today 4 of 10 (the misses: a ground or wall strip nearer the centre
-// than the sphere's own object, or the sphere's few rings fitting a box or cylinder as well); the
-// issue asks for every frame.
+// Tolerance (issue 10): radius within 5%, centre within 10% of the radius, in at least half the
+// frames that see the sphere: today 5 of 10 (the misses: the sphere's top taken with the ground in
+// the scene graph's band, 2-3 voxels of 0.2 m; the sphere's few rings fitting a frustum or
+// cylinder as well); the issue asks for every frame.
 TEST(LidarScene, CalibrationSphereOnTheGroundAmongWalls) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   int seen = 0, found = 0;
@@ -51,7 +51,26 @@ TEST(LidarScene, CalibrationSphereOnTheGroundAmongWalls) {
     }
   }
   ASSERT_GE(seen, 5);
-  EXPECT_GE(10 * found, 4 * seen) << found << " of " << seen << ";" << misses;
+  EXPECT_GE(2 * found, seen) << found << " of " << seen << ";" << misses;
+}
+
+// The same frames without the sphere: ground and two walls are structure, and what they leave is
+// no object the size of the scene (all of the frame as one object was once the answer when no
+// segment was left: a 20 m box).
+TEST(LidarScene, GroundAndWallsAloneGiveNoSceneSizedObject) {
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const synth::SceneCapture capture = testing::lidar_capture(seed);
+    PointList points;
+    for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
+      if (!capture.image.points[i].allFinite() || capture.image.labels[i] >= 20) continue;
+      points.push_back(capture.image.points[i]);
+    }
+    const auto result = pipeline::recognize_cloud(points, cfg, "lidar");
+    for (const auto& o : result.objects) {
+      EXPECT_LT(o.extent.size.maxCoeff(), 3.0) << "seed " << seed << ": " << o.shape << " " << o.extent.size.transpose();
+    }
+  }
 }
 
 }  // namespace
