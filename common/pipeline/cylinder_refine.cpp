@@ -6,6 +6,23 @@
 #include "geometry/plane.hpp"
 
 namespace cloudshape::pipeline::detail {
+namespace {
+
+// normal_eq += w j j^T on and below the diagonal only, each entry as the full outer product
+// computes it (j_c (w j_r)); the solver reads no more, and the upper half is mirrored from it.
+template <int N>
+void add_weighted_outer(Eigen::Matrix<double, N, N>& normal_eq, const Eigen::Matrix<double, N, 1>& j, double w) {
+  const Eigen::Matrix<double, N, 1> wj = w * j;
+  for (int c = 0; c < N; ++c)
+    for (int r = c; r < N; ++r) normal_eq(r, c) += j(c) * wj(r);
+}
+
+template <int N>
+void mirror_lower(Eigen::Matrix<double, N, N>& m) {
+  m.template triangularView<Eigen::StrictlyUpper>() = m.transpose();
+}
+
+}  // namespace
 
 SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std::uint32_t>& side,
                                   const SideCylinder& start, double band, int iterations) {
@@ -35,11 +52,12 @@ SideCylinder refine_side_cylinder(const PointList& cloud, const std::vector<std:
       const Eigen::Vector3d n = q / rho;
       Eigen::Matrix<double, 5, 1> j;
       j << -h * n.dot(u), -h * n.dot(v), -n.dot(u), -n.dot(v), -1.0;
-      normal_eq += w * j * j.transpose();
+      add_weighted_outer(normal_eq, j, w);
       rhs += w * j * r;
       ++used;
     }
     if (used < 6) return start;
+    mirror_lower(normal_eq);
     const Eigen::Matrix<double, 5, 1> step = -normal_eq.ldlt().solve(rhs);
     if (!step.allFinite()) return start;
     cur.axis = (cur.axis + step[0] * u + step[1] * v).normalized();
@@ -98,11 +116,12 @@ std::optional<SideCone> cone_steps(const PointList& cloud, const std::vector<std
       Eigen::Matrix<double, 6, 1> j;
       j << -h * n.dot(u) - cur.slope * d.dot(u), -h * n.dot(v) - cur.slope * d.dot(v), -n.dot(u),
           -n.dot(v), -1.0, -h;
-      normal_eq += w * j * j.transpose();
+      add_weighted_outer(normal_eq, j, w);
       rhs += w * j * (r * norm);
       ++used;
     }
     if (used < 8) return std::nullopt;
+    mirror_lower(normal_eq);
     const Eigen::Matrix<double, 6, 1> step = -normal_eq.ldlt().solve(rhs);
     if (!step.allFinite()) return std::nullopt;
     cur.axis = (cur.axis + step[0] * u + step[1] * v).normalized();
