@@ -232,7 +232,9 @@ TEST_P(PicturePng, DrawsTheBoxEdgesWhereThePlanProjectsThem) {
     for (const Eigen::Vector2d& m : hidden_middles) {
       double nearest = 1e9;
       for (const auto& [a, b] : visible) nearest = std::min(nearest, distance_to_segment(m, a, b));
-      if (nearest > 5.0) EXPECT_FALSE(colour_near(image.get(), m, kWire)) << panel.caption << ": hidden edge at " << m.transpose();
+      if (nearest > 5.0) {
+        EXPECT_FALSE(colour_near(image.get(), m, kWire)) << panel.caption << ": hidden edge at " << m.transpose();
+      }
     }
     // A pixel on the face most turned to the camera, far from every drawn edge (hidden ones
     // cross faces too): the first object's colour there, shaded by depth, not the wire.

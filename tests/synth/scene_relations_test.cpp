@@ -37,9 +37,10 @@ void expect_no_overlap(const GeneratedScene& g) {
   const auto& objects = g.scene.objects;
   for (std::size_t i = 0; i < objects.size(); ++i)
     for (std::size_t j = 0; j < objects.size(); ++j)
-      if (i != j)
+      if (i != j) {
         EXPECT_GE(deepest_penetration(objects[i].solid, objects[j].solid), -1e-9)
             << i << " in " << j;
+      }
 }
 
 constexpr double kTol = 1e-12;  // of a scene whose unit is 1
@@ -81,8 +82,9 @@ TEST(SceneRelations, StackedBoxRestsOnTheLowerOne) {
       EXPECT_NEAR(testing::surface_residual(lower, under), 0.0, kTol) << "seed " << seed;
       const Eigen::Vector3d q = testing::to_local(lower.pose, under);
       for (int k = 0; k < 3; ++k)
-        if (std::abs(lower.pose.axes(k, 2)) < 0.5)
+        if (std::abs(lower.pose.axes(k, 2)) < 0.5) {
           EXPECT_LT(std::abs(q[k]), 0.25 * lower.dimensions[k].second);
+        }
     }
     // The bottom box and the objects beside the stack stand on the table.
     EXPECT_NEAR(lowest(g.scene.objects[0].solid, kZ), 0.0, kTol);
