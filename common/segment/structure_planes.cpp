@@ -335,11 +335,23 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     }
     // Seen from inside, everything in a wall's plane is wall: its parts apart (between windows,
     // beyond an occluder's shadow) too.
+    // A part apart from the plane's own must lie in it, within the noise its connected part shows,
+    // not merely within the band: a ball's top resting on the ground is a few coarse voxels of the
+    // ground's band high, but half a metre above the ground itself.
     if (encloses) {
       const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
+      std::vector<double> distance;
+      distance.reserve(fit.inliers.size());
+      for (std::uint32_t n : fit.inliers) distance.push_back(std::abs(fit.plane.signed_distance(g.nodes[n])));
+      std::nth_element(distance.begin(), distance.begin() + distance.size() / 2, distance.end());
+      const double noise = cfg.contact_noise_sigmas * 1.4826 * distance[distance.size() / 2];
+      std::vector<char> connected(g.size(), 0);
+      for (std::uint32_t n : fit.inliers) connected[n] = 1;
       fit.inliers.clear();
       for (std::uint32_t n : active) {
-        if (is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) fit.inliers.push_back(n);
+        if (!is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) continue;
+        const double limit = std::max(noise, cfg.contact_min_band * g.spacing[n]);
+        if (connected[n] || std::abs(fit.plane.signed_distance(g.nodes[n])) <= limit) fit.inliers.push_back(n);
       }
     }
     for (std::uint32_t n : fit.inliers) removed[n] = 1;

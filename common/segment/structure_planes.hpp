@@ -30,7 +30,9 @@ struct StructurePlane {
 // `from_inside`: the graph's viewpoint is a lidar's among its ground and walls; a plane with at
 // least cfg.structure_enclosing of the other nodes on the sensor's side and spanning
 // cfg.structure_span of the scene (standard deviations along the longest axes) is then structure
-// too, and all its nodes in the band go with it (a wall's parts between windows too).
+// too, and all its nodes in the band go with it (a wall's parts between windows too); a part apart
+// from the plane's connected one only within the noise the connected one shows (a ball on the
+// ground rises above it).
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
                                              std::vector<char>& removed, parallel::ThreadPool* pool = nullptr,
                                              bool from_inside = false);
