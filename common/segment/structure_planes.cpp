@@ -239,6 +239,16 @@ double median_spacing(const NeighbourGraph& g, std::vector<std::uint32_t> nodes)
   return s[s.size() / 2];
 }
 
+// The plane's nodes' spread about it, robustly: their median distance scaled to a normal deviation.
+double robust_deviation(const NeighbourGraph& g, const PlaneFit& fit) {
+  std::vector<double> distance;
+  distance.reserve(fit.inliers.size());
+  for (std::uint32_t n : fit.inliers) distance.push_back(std::abs(fit.plane.signed_distance(g.nodes[n])));
+  if (distance.empty()) return 0.0;
+  std::nth_element(distance.begin(), distance.begin() + distance.size() / 2, distance.end());
+  return 1.4826 * distance[distance.size() / 2];
+}
+
 // A wall or ground seen from inside the scene (a lidar among them): nearly all else lies on the
 // sensor's side of it, and it spans a large share of the scene. A solid's face has its own solid
 // behind it; a table's edge, the floor beyond it.
@@ -317,13 +327,14 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
-    // The plane beyond an object's shadow is cut off from the part in front of it: every node in
-    // the plane's band shows where the plane reaches.
-    std::vector<std::uint32_t> coplanar;
-    {
-      const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
-      for (std::uint32_t n : active)
-        if (inlier[n] || is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) coplanar.push_back(n);
+    // Every node in the plane's band, its connected part or not: the table beyond an object's shadow
+    // is cut off from the part in front of it, and still shows where the table reaches.
+    const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
+    std::vector<std::uint32_t> in_band, coplanar;
+    for (std::uint32_t n : active) {
+      const bool band = is_inlier(g, n, fit.plane, cfg.structure_band, min_cos);
+      if (band) in_band.push_back(n);
+      if (band || inlier[n]) coplanar.push_back(n);
     }
     const std::size_t inside = standing_inside(g, coplanar, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
@@ -334,24 +345,15 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       continue;
     }
     // Seen from inside, everything in a wall's plane is wall: its parts apart (between windows,
-    // beyond an occluder's shadow) too.
-    // A part apart from the plane's own must lie in it, within the noise its connected part shows,
-    // not merely within the band: a ball's top resting on the ground is a few coarse voxels of the
-    // ground's band high, but half a metre above the ground itself.
+    // beyond an occluder's shadow) too, but in the plane, within the noise its connected part shows,
+    // not merely within its band: a ball's top, resting on the ground, lies a few coarse voxels
+    // of the ground's band high, half a metre above the ground itself.
     if (encloses) {
-      const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
-      std::vector<double> distance;
-      distance.reserve(fit.inliers.size());
-      for (std::uint32_t n : fit.inliers) distance.push_back(std::abs(fit.plane.signed_distance(g.nodes[n])));
-      std::nth_element(distance.begin(), distance.begin() + distance.size() / 2, distance.end());
-      const double noise = cfg.contact_noise_sigmas * 1.4826 * distance[distance.size() / 2];
-      std::vector<char> connected(g.size(), 0);
-      for (std::uint32_t n : fit.inliers) connected[n] = 1;
+      const double noise = cfg.contact_noise_sigmas * robust_deviation(g, fit);
       fit.inliers.clear();
-      for (std::uint32_t n : active) {
-        if (!is_inlier(g, n, fit.plane, cfg.structure_band, min_cos)) continue;
+      for (std::uint32_t n : in_band) {
         const double limit = std::max(noise, cfg.contact_min_band * g.spacing[n]);
-        if (connected[n] || std::abs(fit.plane.signed_distance(g.nodes[n])) <= limit) fit.inliers.push_back(n);
+        if (inlier[n] || std::abs(fit.plane.signed_distance(g.nodes[n])) <= limit) fit.inliers.push_back(n);
       }
     }
     for (std::uint32_t n : fit.inliers) removed[n] = 1;
