@@ -78,15 +78,18 @@ struct SideOffset {
   double h, rho, distance;
 };
 
-SideOffset side_offset(const SideCone& c, const Point& p) {
+// `norm`: sqrt(1 + slope^2), the same for every point of one cone.
+SideOffset side_offset(const SideCone& c, const Point& p, double norm) {
   SideOffset o;
   o.d = p - c.on_axis;
   o.h = o.d.dot(c.axis);
   o.q = o.d - o.h * c.axis;
   o.rho = o.q.norm();
-  o.distance = (o.rho - c.radius - c.slope * o.h) / std::sqrt(1.0 + c.slope * c.slope);
+  o.distance = (o.rho - c.radius - c.slope * o.h) / norm;
   return o;
 }
+
+double slope_norm(const SideCone& c) { return std::sqrt(1.0 + c.slope * c.slope); }
 
 // One Tukey-weighted Gauss-Newton run of the cone's side distance; nothing when it fails.
 std::optional<SideCone> cone_steps(const PointList& cloud, const std::vector<std::uint32_t>& side,
@@ -103,9 +106,9 @@ std::optional<SideCone> cone_steps(const PointList& cloud, const std::vector<std
     Eigen::Matrix<double, 6, 6> normal_eq = Eigen::Matrix<double, 6, 6>::Zero();
     Eigen::Matrix<double, 6, 1> rhs = Eigen::Matrix<double, 6, 1>::Zero();
     std::size_t used = 0;
-    const double norm = std::sqrt(1.0 + cur.slope * cur.slope);
+    const double norm = slope_norm(cur);
     for (std::uint32_t i : side) {
-      const SideOffset o = side_offset(cur, cloud[i]);
+      const SideOffset o = side_offset(cur, cloud[i], norm);
       const Eigen::Vector3d& d = o.d;
       const Eigen::Vector3d& q = o.q;
       const double h = o.h, rho = o.rho, r = o.distance;
@@ -148,7 +151,7 @@ std::optional<SideCone> refine_side_cone(const PointList& cloud,
   return loose ? cone_steps(cloud, side, *loose, band, iterations) : std::nullopt;
 }
 
-double side_distance(const SideCone& c, const Point& p) { return side_offset(c, p).distance; }
+double side_distance(const SideCone& c, const Point& p) { return side_offset(c, p, slope_norm(c)).distance; }
 
 double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>& side, const SideCylinder& c,
                         double band) {
@@ -163,8 +166,9 @@ double side_arc_degrees(const PointList& cloud, const std::vector<std::uint32_t>
   geometry::plane_basis(c.axis, u, v);
   std::array<std::size_t, kSectors> count{};
   std::size_t near = 0;
+  const double norm = slope_norm(c);
   for (std::uint32_t i : side) {
-    const SideOffset o = side_offset(c, cloud[i]);
+    const SideOffset o = side_offset(c, cloud[i], norm);
     if (std::abs(o.distance) > band) continue;
     const double a = std::atan2(o.q.dot(v), o.q.dot(u)) + kPi;
     ++count[static_cast<std::size_t>(std::min(kSectors - 1.0, a / (2.0 * kPi) * kSectors))];
