@@ -172,6 +172,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("box_step_depth", c.box_step_depth);
   f("box_step_share", c.box_step_share);
   f("prism_side_fill", c.prism_side_fill);
+  f("cap_section_fill", c.cap_section_fill);
   f("prism_run_gap", c.prism_run_gap);
   f("prism_corner_gap", c.prism_corner_gap);
   f("prism_outline_cell", c.prism_outline_cell);

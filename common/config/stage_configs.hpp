@@ -180,6 +180,7 @@ struct SolveConfig {
   double box_step_depth = 0.1;           // ... with face points beyond its plane on both sides, farther than this share of the points' extent along its normal ...
   double box_step_share = 0.05;          // ... more than this share of the face points on each side, is a step (an L's inner face): no box
   double prism_side_fill = 0.6;          // the convex hull of a prism side's points covers at least this share of its rectangle (an octahedron's triangles: half)
+  double cap_section_fill = 0.8;         // a seen cap of a pentagonal prism: the convex hull of the points on its plane covers at least this share of the pentagon (a rhombus at a pentagon's angle: 0.58)
   double prism_run_gap = 4.0;            // a prism side face's points split where they leave a gap this wide (resolutions): coplanar sides of a non-convex outline
   double prism_corner_gap = 8.0;         // two prism sides meet at a corner when one's points end this near (resolutions) where the next's begin
   double prism_outline_cell = 2.0;       // a cap's outline (a prism seen from one side) is traced on cells this wide (resolutions)

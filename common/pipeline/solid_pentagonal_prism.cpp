@@ -96,6 +96,20 @@ double side_fill(const PointList& cloud, const DetectedPlane& face, const Eigen:
   return std::abs(geometry::signed_area(geometry::convex_hull_2d(std::move(flat)))) / rectangle;
 }
 
+// Share of the pentagon (apothem `apothem` about the axis through `on_axis`) that the convex hull
+// of the points on a cap's plane, `at` along the axis, covers. All points within `band` of the
+// plane count: noise splits one cap into several parallel planes, each holding only part of it.
+double cap_fill(const SolveInput& in, const Point& on_axis, const Eigen::Vector3d& axis, const Eigen::Vector3d& u,
+                const Eigen::Vector3d& v, double at, double apothem, double band) {
+  std::vector<Eigen::Vector2d> on_cap;
+  for (const Point& p : in.cloud) {
+    const Eigen::Vector3d d = p - on_axis;
+    if (std::abs(d.dot(axis) - at) <= band) on_cap.emplace_back(d.dot(u), d.dot(v));
+  }
+  const double pentagon = 5.0 * apothem * apothem * std::tan(kPi / 5.0);
+  return std::abs(geometry::signed_area(geometry::convex_hull_2d(std::move(on_cap)))) / pentagon;
+}
+
 // Points of the planes (faces or not) whose normals are perpendicular to the axis.
 std::size_t points_around(const PlaneSegmentation& planes, const Eigen::Vector3d& axis,
                           const config::SolveConfig& cfg) {
@@ -203,6 +217,13 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
     if (seen_face[k] && side_fill(in.cloud, *seen_face[k], axis, axis.cross(normals[k]), height) < in.cfg.prism_side_fill)
       return std::nullopt;
 
+  // A cap seen is seen whole: nothing of a right prism stands above it. Two sides at a pentagon's
+  // angle fit a rhombic prism as well; its cap, seen, shows four corners.
+  for (const DetectedPlane* cap : found->caps) {
+    const double at = cap->plane.normal.dot(axis) > 0 ? hi : lo;
+    if (cap_fill(in, on_axis, axis, u, v, at, apothem, in.cfg.inlier_distance * in.resolution) < in.cfg.cap_section_fill)
+      return std::nullopt;
+  }
   FittedSolid out;
   out.shape = Shape::pentagonal_prism;
   out.dimensions = {{"side", side}, {"height", height}};

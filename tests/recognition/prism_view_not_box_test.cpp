@@ -103,5 +103,26 @@ TEST(PrismView, ACapAndTwoSidesGiveTheWholeOutline) {
   EXPECT_GE(right, 9) << "of " << views;
 }
 
+// A rhombus with 72 and 108 degree corners (side 60, prism 80 high), seen across a 108 degree
+// corner with its cap: the two sides meet at a regular pentagon's angle, and a pentagonal prism
+// fitted to them explains the points as well as the rhombus does. The cap shows four corners:
+// never a pentagonal prism, and a prism of 4 sides in most views.
+TEST(PrismView, ARhombusAtAPentagonsAngleIsNoPentagonalPrism) {
+  const double c = std::cos(72.0 * kPi / 180.0), s = std::sin(72.0 * kPi / 180.0);
+  geometry::Polygon2 rhombus = {{0, 0}, {60, 0}, {60 + 60 * c, 60 * s}, {60 * c, 60 * s}};
+  const Eigen::Vector2d middle = 0.5 * (rhombus[0] + rhombus[2]);
+  for (auto& p : rhombus) p -= middle;
+  int four = 0, views = 0;
+  for (std::uint64_t seed = 950; seed < 954; ++seed) {
+    for (double elevation : {35.0, 55.0}) {
+      const View v = view_from(rhombus, rhombus[1], 80.0, seed, elevation);
+      ++views;
+      EXPECT_NE(v.result.shape, "pentagonal_prism") << "seed " << seed << ", elevation " << elevation;
+      if (v.result.shape == "prism" && std::lround(dimension(v.result, "sides")) == 4) ++four;
+    }
+  }
+  EXPECT_GE(2 * four, views) << four << " of " << views;
+}
+
 }  // namespace
 }  // namespace cloudshape::newshapes
