@@ -218,10 +218,13 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
       return std::nullopt;
 
   // A cap seen is seen whole: nothing of a right prism stands above it. Two sides at a pentagon's
-  // angle fit a rhombic prism as well; its cap, seen, shows four corners.
-  for (const DetectedPlane* cap : found->caps) {
-    const double at = cap->plane.normal.dot(axis) > 0 ? hi : lo;
-    if (cap_fill(in, on_axis, axis, u, v, at, apothem, in.cfg.inlier_distance * in.resolution) < in.cfg.cap_section_fill)
+  // angle fit a rhombic prism as well; its cap, seen, shows four corners. Each end once, however
+  // many planes noise split its cap into.
+  for (const bool up : {true, false}) {
+    const bool seen = std::any_of(found->caps.begin(), found->caps.end(),
+                                  [&](const DetectedPlane* c) { return (c->plane.normal.dot(axis) > 0) == up; });
+    if (seen && cap_fill(in, on_axis, axis, u, v, up ? hi : lo, apothem, in.cfg.inlier_distance * in.resolution) <
+                    in.cfg.cap_section_fill)
       return std::nullopt;
   }
   FittedSolid out;

@@ -4,18 +4,13 @@
 #include <cmath>
 #include <limits>
 
+#include "segment/detail/robust_spread.hpp"
+
 namespace cloudshape::segment {
 namespace {
 
 std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
   return (static_cast<std::uint64_t>(x) << 32) ^ (static_cast<std::uint64_t>(y) & 0xFFFFFFFFull);
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
 }
 
 }  // namespace
@@ -49,8 +44,8 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
     f.plane = planes[k].plane;
-    f.cell = median(spacing[k]);
-    f.band = std::max(cfg.contact_noise_sigmas * 1.4826 * median(distance[k]), cfg.contact_min_band * f.cell);
+    f.cell = detail::median(spacing[k]);
+    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(distance[k]), cfg.contact_min_band * f.cell);
     geometry::plane_basis(f.plane.normal, f.u, f.v);
   }
   for (std::uint32_t n = 0; n < graph.size(); ++n) {

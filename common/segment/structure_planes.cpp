@@ -7,6 +7,7 @@
 
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
+#include "segment/detail/robust_spread.hpp"
 #include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
@@ -230,23 +231,19 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
   return inside;
 }
 
-double median_spacing(const NeighbourGraph& g, std::vector<std::uint32_t> nodes) {
-  if (nodes.empty()) return 0.0;
+double median_spacing(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes) {
   std::vector<double> s;
   s.reserve(nodes.size());
   for (std::uint32_t n : nodes) s.push_back(g.spacing[n]);
-  std::nth_element(s.begin(), s.begin() + s.size() / 2, s.end());
-  return s[s.size() / 2];
+  return detail::median(std::move(s));
 }
 
-// The plane's nodes' spread about it, robustly: their median distance scaled to a normal deviation.
-double robust_deviation(const NeighbourGraph& g, const PlaneFit& fit) {
+// The plane's nodes' spread about it, robustly (detail::robust_deviation of their distances).
+double node_deviation(const NeighbourGraph& g, const PlaneFit& fit) {
   std::vector<double> distance;
   distance.reserve(fit.inliers.size());
   for (std::uint32_t n : fit.inliers) distance.push_back(std::abs(fit.plane.signed_distance(g.nodes[n])));
-  if (distance.empty()) return 0.0;
-  std::nth_element(distance.begin(), distance.begin() + distance.size() / 2, distance.end());
-  return 1.4826 * distance[distance.size() / 2];
+  return detail::robust_deviation(std::move(distance));
 }
 
 // A wall or ground seen from inside the scene (a lidar among them): nearly all else lies on the
@@ -349,7 +346,7 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     // not merely within its band: a ball's top, resting on the ground, lies a few coarse voxels
     // of the ground's band high, half a metre above the ground itself.
     if (encloses) {
-      const double noise = cfg.contact_noise_sigmas * robust_deviation(g, fit);
+      const double noise = cfg.contact_noise_sigmas * node_deviation(g, fit);
       fit.inliers.clear();
       for (std::uint32_t n : in_band) {
         const double limit = std::max(noise, cfg.contact_min_band * g.spacing[n]);
