@@ -52,6 +52,8 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("convex_share", c.convex_share);
   f("crease_overlap", c.crease_overlap);
   f("crease_band", c.crease_band);
+  f("concave_cut_band", c.concave_cut_band);
+  f("concave_cut_cross_share", c.concave_cut_cross_share);
   f("cavity_concavity", c.cavity_concavity);
   f("cavity_gap", c.cavity_gap);
   f("structure_max_planes", c.structure_max_planes);

@@ -107,6 +107,8 @@ struct SegmentConfig {
   double convex_share = 0.5;               // adjacent patches join when at least this share of their junction is convex
   double crease_overlap = 0.5;             // ... and, meeting at an angle, their spans along the crease overlap by this share of the shorter (0: off)
   double crease_band = 4.0;                // ... (each patch's nodes within this many node spacings of the other's plane)
+  double concave_cut_band = 3.0;           // organized: a segment whose flat patch meets another of its patches concavely is cut along its plane: within this many node spacings of it is on it ...
+  double concave_cut_cross_share = 0.05;   // ... unless a patch has more than this share of its nodes beyond the band on both sides (a face runs through the cut)
   double cavity_concavity = 0.3;           // a segment this concave towards the sensor (mean n . (x - c) over its RMS spread) is a container's inside: it joins the container ...
   double cavity_gap = 10.0;                 // ... the segment with the most nodes within this many node spacings of it
   std::int64_t structure_max_planes = 8;   // structure planes (table, floor, walls) removed at most

@@ -7,6 +7,7 @@
 #include <unordered_map>
 
 #include "geometry/pca.hpp"
+#include "segment/concave_cuts.hpp"
 #include "segment/crease_overlap.hpp"
 
 namespace cloudshape::segment {
@@ -155,6 +156,7 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   struct Junction {
     std::uint32_t convex = 0;
     std::uint32_t total = 0;
+    std::uint32_t edge = 0;  // convex and at an angle: an edge between two faces of one solid
   };
   std::unordered_map<std::uint64_t, Junction> junctions;
   for (std::uint32_t a = 0; a < g.size(); ++a) {
@@ -166,7 +168,9 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
       const std::uint32_t oa = origin[a];
       const std::uint32_t ob = origin[b];
       const bool flat = g.normals[oa].dot(g.normals[ob]) >= tolerance_cos;
-      if (flat || (g.normals[oa] - g.normals[ob]).dot(g.nodes[oa] - g.nodes[ob]) >= 0.0) ++j.convex;
+      const bool turns_out = (g.normals[oa] - g.normals[ob]).dot(g.nodes[oa] - g.nodes[ob]) >= 0.0;
+      if (flat || turns_out) ++j.convex;
+      if (!flat && turns_out) ++j.edge;
     });
   }
   UnionFind segments(static_cast<std::size_t>(patches));
@@ -193,12 +197,15 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   std::sort(keys.begin(), keys.end());
   std::vector<std::vector<std::uint32_t>> rejected(static_cast<std::size_t>(patches));
   std::vector<std::uint64_t> sliver_joins;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> concave, edges;
   for (std::uint64_t key : keys) {
     const Junction& j = junctions.at(key);
     const auto a = static_cast<std::uint32_t>(key >> 32);
     const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
-    const bool joins = static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total) &&
-                       (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
+    const bool convex = static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total);
+    if (!convex) concave.emplace_back(a, b);
+    if (static_cast<double>(j.edge) >= cfg.convex_share * static_cast<double>(j.total)) edges.emplace_back(a, b);
+    const bool joins = convex && (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
     const bool slivers =
         depth_image && static_cast<std::int64_t>(std::min(patch_size[a], patch_size[b])) < cfg.min_object_nodes;
     if (slivers) {
@@ -233,6 +240,23 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     auto& gone = rejected_by_root[root == ra ? rb : ra];
     kept.insert(kept.end(), gone.begin(), gone.end());
     gone.clear();
+  }
+
+  // In a depth image, segments that local convexity joined through one path although two of
+  // their patches meet concavely are cut along the flat one's plane (concave_cuts.hpp).
+  if (depth_image) {
+    std::vector<std::uint32_t> group(static_cast<std::size_t>(patches));
+    for (std::uint32_t p = 0; p < static_cast<std::uint32_t>(patches); ++p) group[p] = segments.find(p);
+    std::vector<char> surface(g.size(), 0);
+    for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
+    group = cut_at_concave_faces(g, patch, surface, patches, std::move(group), concave, edges, cfg);
+    UnionFind cut(static_cast<std::size_t>(patches));
+    std::unordered_map<std::uint32_t, std::uint32_t> first_of_group;
+    for (std::uint32_t p = 0; p < static_cast<std::uint32_t>(patches); ++p) {
+      const auto it = first_of_group.emplace(group[p], p).first;
+      cut.join(it->second, p);
+    }
+    segments = cut;
   }
 
   // Small segments (edge slivers, noise) join the neighbour they share most edges with.

@@ -26,12 +26,13 @@ std::vector<char> narrow_groups(const NeighbourGraph& graph, const std::vector<s
 // patch. Two adjacent patches join when at least cfg.convex_share of the edges between them are
 // convex, judged between the surface nodes either side of the edge band
 // ((n_a - n_b) . (x_a - x_b) >= 0, or normals within cfg.convex_tolerance_degrees). In a depth
-// image (`depth_image`: an organized cloud's graph, whose nodes tile every face seen) two more
-// rules hold: patches meeting at an angle must share their crease
-// (CreaseOverlap, cfg.crease_overlap and cfg.crease_band), and a patch under cfg.min_object_nodes
-// joins in a second pass, never bridging two groups whose own junction was rejected. A segment
-// with fewer than cfg.min_object_nodes nodes is then absorbed by the neighbour it shares most
-// edges with.
+// image (`depth_image`: an organized cloud's graph, whose nodes tile every face seen) three more
+// rules hold: patches meeting at an angle must share their crease (CreaseOverlap,
+// cfg.crease_overlap and cfg.crease_band); a patch under cfg.min_object_nodes joins in a second
+// pass, never bridging two groups whose own junction was rejected; and a segment two of whose
+// patches meet concavely is cut along the flat one's plane (cut_at_concave_faces,
+// cfg.concave_cut_band). A segment with fewer than cfg.min_object_nodes nodes is then absorbed by
+// the neighbour it shares most edges with.
 std::vector<std::int32_t> convex_segments(const NeighbourGraph& graph, const std::vector<char>& removed,
                                           const config::SegmentConfig& cfg, bool depth_image = false);
 

@@ -1,0 +1,42 @@
+// Segments cut along a flat face where another patch of the same segment meets it concavely
+// (after CPC, Schoeler et al. 2015): a box stacked flush on a box, joined through their sides.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "config/stage_configs.hpp"
+#include "segment/neighbour_graph.hpp"
+
+namespace cloudshape::segment {
+
+// `patch`: per node its smooth patch (0..patches-1) or -1; `surface`: per node whether it is a
+// surface node (edge bands blur two faces and judge nothing); `group`: per patch its segment;
+// `concave`: pairs of adjacent patches whose junction is mostly concave; `edges`: pairs whose
+// junction is mostly a convex edge (normals turned apart beyond the convex tolerance).
+//
+// Local convexity joins two solids whenever any path of convex junctions links them: a box on a
+// slightly larger box is one segment through their sides, although the lower box's top meets the
+// upper box's front concavely. For such a pair inside one segment, the plane of either patch,
+// when that patch is flat (cfg.min_object_nodes surface nodes or more, three standard deviations
+// of them within cfg.concave_cut_band node spacings of their plane), cuts the segment in two:
+// every patch goes to the side its surface nodes lie on beyond the band (the flat patch itself,
+// and patches within the band, to its own side). A patch lying on both sides (more than
+// cfg.concave_cut_cross_share of its surface nodes beyond the band either way) stops the cut when
+// it is flat (a face of one solid runs through any plane inside it, so an L-shaped solid seen
+// with its cap is never cut) or when either side's piece of it is not flat; otherwise it grew
+// over two solids' parallel faces and is split: its nodes beyond the band become a patch of their
+// own (`patch` and `patches` grow). No convex edge may run along the cut (two patches of
+// cfg.min_object_nodes surface nodes or more, one either side, meeting at one: a solid's own
+// faces, a can's lid and side cut apart where a taller can beside it rises above the lid), and
+// each side must hold at least cfg.min_object_nodes nodes. Cuts
+// repeat until none is left. Returns the new segment of every patch (new ids appended).
+std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& graph, std::vector<std::int32_t>& patch,
+                                                const std::vector<char>& surface, std::int32_t& patches,
+                                                std::vector<std::uint32_t> group,
+                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& concave,
+                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
+                                                const config::SegmentConfig& cfg);
+
+}  // namespace cloudshape::segment
