@@ -51,10 +51,20 @@ bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
     hi = std::max(hi, p.dot(c.axis));
   }
   const double band = std::max(in.cfg.cap_band * in.resolution, in.cfg.face_slab * (hi - lo));
-  for (const DetectedPlane* f : c.caps) {
-    const double at = detail::face_position(in.cloud, *f, c.axis);
-    const bool up = f->plane.normal.dot(c.axis) > 0;
-    if (std::abs(at - (up ? hi : lo)) > band) return false;
+  // Noise splits a cap into parallel planes a little apart (within inlier_distance of each
+  // other): a cap's place is where all of its points are, not where the smallest piece is.
+  const double same_cap = in.cfg.inlier_distance * in.resolution;
+  std::vector<double> at(c.caps.size());
+  for (std::size_t k = 0; k < c.caps.size(); ++k) at[k] = detail::face_position(in.cloud, *c.caps[k], c.axis);
+  for (std::size_t k = 0; k < c.caps.size(); ++k) {
+    const bool up = c.caps[k]->plane.normal.dot(c.axis) > 0;
+    double sum = 0.0, points = 0.0;
+    for (std::size_t j = 0; j < c.caps.size(); ++j) {
+      if ((c.caps[j]->plane.normal.dot(c.axis) > 0) != up || std::abs(at[j] - at[k]) > same_cap) continue;
+      sum += at[j] * static_cast<double>(c.caps[j]->inliers.size());
+      points += static_cast<double>(c.caps[j]->inliers.size());
+    }
+    if (std::abs(sum / points - (up ? hi : lo)) > band) return false;
   }
   return true;
 }
@@ -395,7 +405,20 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   bool from_cap = false;
   if (!chained && !choice.caps.empty()) {
     std::size_t matched = 0;
-    chained = ring_from_cap(in, *choice.caps.front(), u, v, runs, matched);
+    // Noise splits a cap into parallel planes a little apart: its outline is traced on all of
+    // them, as caps_at_ends places it (one piece alone is a sparse, notched copy of the cap).
+    DetectedPlane cap = *choice.caps.front();
+    const double same_cap = in.cfg.inlier_distance * in.resolution;
+    const double at = detail::face_position(in.cloud, cap, axis);
+    for (std::size_t k = 1; k < choice.caps.size(); ++k) {
+      const DetectedPlane& piece = *choice.caps[k];
+      if (piece.plane.normal.dot(cap.plane.normal) <= 0.0 ||
+          std::abs(detail::face_position(in.cloud, piece, axis) - at) > same_cap)
+        continue;
+      cap.inliers.insert(cap.inliers.end(), piece.inliers.begin(), piece.inliers.end());
+      cap.boundary.insert(cap.boundary.end(), piece.boundary.begin(), piece.boundary.end());
+    }
+    chained = ring_from_cap(in, cap, u, v, runs, matched);
     if (matched == 0) return std::nullopt;
     from_cap = true;
   }

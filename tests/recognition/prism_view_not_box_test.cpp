@@ -124,5 +124,27 @@ TEST(PrismView, ARhombusAtAPentagonsAngleIsNoPentagonalPrism) {
   EXPECT_GE(2 * four, views) << four << " of " << views;
 }
 
+// A squat hexagonal prism (side 50, 39 high) seen with its cap and two or three sides, densely
+// (16 000 points): 0.5% noise splits the cap into parallel planes, each a sparse, notched copy of
+// it. The cap is placed at its end and its outline traced on all of its pieces: a prism of 6
+// sides in at least 15 of 20 views (18 today; 6 when one piece was taken for the cap, the rest
+// `unknown`: the smallest piece seemed short of the end, or the outline had notches).
+TEST(PrismView, ACapSplitByNoiseIsOneCap) {
+  int six = 0, views = 0;
+  for (std::uint64_t seed = 1100; seed < 1110; ++seed) {
+    for (double elevation : {50.0, 70.0}) {
+      std::mt19937_64 rng(seed);
+      const synth::Pose pose = synth::random_pose(rng, 100.0);
+      const synth::SolidMesh mesh = synth::prism_mesh(geometry::regular_polygon(6, 50.0), 39.0, pose);
+      const PointList cloud = sample_view(mesh, 16000, 0.005, camera(mesh, pose, {1, 0.3}, elevation), seed + 1);
+      const pipeline::ObjectResult r = recognise_one(cloud);
+      ++views;
+      EXPECT_NE(r.shape, "box") << "seed " << seed << ", elevation " << elevation;
+      if (r.shape == "prism" && std::lround(dimension(r, "sides")) == 6) ++six;
+    }
+  }
+  EXPECT_GE(six, 15) << "of " << views;
+}
+
 }  // namespace
 }  // namespace cloudshape::newshapes
