@@ -25,6 +25,7 @@ expected_shape() {
     *can*) echo cylinder ;;
     *ball*) echo sphere ;;
     *pentagonal_prism*) echo pentagonal_prism ;;
+    *plus* | *letter_t* | *star* | *letter_l*) echo prism ;;
     *) echo box ;;
   esac
 }

@@ -179,6 +179,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("prism_corner_gap", c.prism_corner_gap);
   f("prism_outline_cell", c.prism_outline_cell);
   f("prism_min_turn_degrees", c.prism_min_turn_degrees);
+  f("prism_notch_outside_share", c.prism_notch_outside_share);
+  f("prism_notch_min_share", c.prism_notch_min_share);
   f("prism_corner_cut_cells", c.prism_corner_cut_cells);
   f("prism_border_band_cells", c.prism_border_band_cells);
   f("prism_join_evidence", c.prism_join_evidence);

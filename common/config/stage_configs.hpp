@@ -187,6 +187,8 @@ struct SolveConfig {
   double prism_corner_gap = 8.0;         // two prism sides meet at a corner when one's points end this near (resolutions) where the next's begin
   double prism_outline_cell = 2.0;       // a cap's outline (a prism seen from one side) is traced on cells this wide (resolutions)
   double prism_min_turn_degrees = 20.0;  // a prism's outline turns at least this much at every corner: shallower is a curved side cut into strips
+  double prism_notch_outside_share = 0.02;  // an object given alone whose cap outline has a concave corner no side face shows: at most this share of its points outside that outline
+  double prism_notch_min_share = 0.1;    // ... and the notches take at least this share of the outline's convex hull (less is a dented border)
   double prism_corner_cut_cells = 3.0;   // a cap-outline side no face shows, shorter than this (outline cells): a rounded corner, its neighbours meet
   double prism_border_band_cells = 2.0;  // cap border points this near the outline (outline cells) place its sides
   double prism_join_evidence = 2.0;      // neighbouring unseen cap-outline sides are one unless two lines fit their border better by this many variances per log

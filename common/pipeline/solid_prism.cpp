@@ -437,12 +437,29 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // Corner k joins side k and side k+1: the polygon's edge k+1 runs from corner k to k+1.
   if (polygon.size() < 3 || !(geometry::signed_area(polygon) > 0.0) || !geometry::is_simple(polygon))
     return std::nullopt;
-  // A cap's border is ragged and notched where something hid it: a concave corner between two
-  // sides only that border shows is no evidence of the cross-section.
+  // A cap's border is ragged and notched where something hid it: in a scene (a viewpoint known)
+  // a neighbour may have, and a concave corner between two sides only that border shows is no
+  // evidence of the cross-section. An object given alone has nothing beside it: such a notch is
+  // the cross-section's where it is deep (the notches take solve.prism_notch_min_share of the
+  // outline's convex hull) and nothing of the object stands in it (a sparse stretch of the cap's
+  // border has the solid's own sides beyond it: no more than solve.prism_notch_outside_share of
+  // the points outside the outline by more than inlier_distance).
+  bool border_notch = false;
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const double turn = turn_degrees(polygon, i);
     if (std::abs(turn) < in.cfg.prism_min_turn_degrees) return std::nullopt;
-    if (turn < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) return std::nullopt;
+    if (turn < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) border_notch = true;
+  }
+  if (border_notch) {
+    if (in.viewpoint) return std::nullopt;
+    // A shallow notch is a dented border (a real box's rounded or crushed edge), not a notch.
+    const double hull = std::abs(geometry::signed_area(geometry::convex_hull_2d(polygon)));
+    if (!(hull - geometry::signed_area(polygon) >= in.cfg.prism_notch_min_share * hull)) return std::nullopt;
+    std::size_t outside = 0;
+    for (const Point& p : in.cloud)
+      outside += geometry::signed_distance(polygon, Eigen::Vector2d(p.dot(u), p.dot(v))) > band;
+    if (static_cast<double>(outside) > in.cfg.prism_notch_outside_share * static_cast<double>(in.cloud.size()))
+      return std::nullopt;
   }
   if (is_rectangle(polygon, in.cfg.parallel_degrees)) return std::nullopt;
   // A regular pentagon is the pentagonal prism's. Sides only a cap's border shows are placed less

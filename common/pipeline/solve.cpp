@@ -143,6 +143,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
   input.tree = tree;
+  input.viewpoint = viewpoint;
   const double tolerance = cfg.inlier_distance * resolution;
   const double diameter = 2.0 * keypoints.reference.radius;
   std::vector<std::pair<FittedSolid, Verification>> fitted;
