@@ -8,8 +8,8 @@
 //   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
 //                    (labelled real or synthetic scenes: see scene_bench.hpp)
 //
-// For every (shape, size) one synthetic solid is drawn (synth::random_solid, fixed seed) and
-// its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
+// For every (shape, size) one synthetic solid is drawn (speed_shapes.hpp: the six by
+// synth::random_solid, a prism and a frustum as meshes; fixed seed) and its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
 // warm-up times and R timed times. Reported per stage: median and p10-p90 (plus min/max in
 // --json) of the StageTimings the pipeline returns, and of the wall clock around the whole
 // call as a cross-check of `total`. Progress goes to stderr; the table or JSON to stdout.
@@ -31,10 +31,10 @@
 #include "config/pipeline_config.hpp"
 #include "parallel/thread_pool.hpp"
 #include "scene_bench.hpp"
+#include "speed_shapes.hpp"
 #include "pipeline/recognize.hpp"
 #include "synth/perturb.hpp"
-#include "synth/random_solid.hpp"
-#include "synth/sample_solid.hpp"
+#include "synth/ground_truth.hpp"
 
 namespace {
 
@@ -136,7 +136,8 @@ int main(int argc, char** argv) {
   int threads = -1;
   app.add_option("--sizes", sizes_arg, "comma-separated point counts")->capture_default_str();
   app.add_option("--shapes", shapes_arg,
-                 "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere");
+                 "comma-separated subset of box,tetrahedron,pentagonal_prism,cone,cylinder,sphere "
+                 "(default: these six), and prism (an L-profile), frustum");
   app.add_option("--reps", reps_arg,
                  "timed repetitions per case (default 15 up to 100k points, 5 above)");
   app.add_option("--warmup", warmup, "untimed runs before the timed ones")->capture_default_str();
@@ -193,18 +194,20 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::vector<cs::synth::ShapeKind> kinds;
+  std::vector<std::string> shape_names;
   if (shapes_arg.empty()) {
-    kinds = cs::synth::all_shape_kinds();
+    for (const auto kind : cs::synth::all_shape_kinds()) shape_names.push_back(cs::synth::to_string(kind));
   } else {
-    for (const auto& name : split(shapes_arg)) {
-      const auto kind = cs::synth::shape_kind_from_string(name);
-      if (!kind) {
-        std::fprintf(stderr, "cloudshape-bench: --shapes: unknown shape '%s'\n", name.c_str());
-        return 2;
-      }
-      kinds.push_back(*kind);
+    shape_names = split(shapes_arg);
+  }
+  std::vector<cs::bench::SpeedShape> kinds;
+  for (const auto& name : shape_names) {
+    auto shape = cs::bench::speed_shape(name, size, seed);
+    if (!shape) {
+      std::fprintf(stderr, "cloudshape-bench: --shapes: unknown shape '%s'\n", name.c_str());
+      return 2;
     }
+    kinds.push_back(std::move(*shape));
   }
   if (sizes.empty() || kinds.empty() || reps_arg < 0 || warmup < 0 || size <= 0 || noise < 0) {
     std::fprintf(stderr, "cloudshape-bench: nothing to run (check the arguments)\n");
@@ -263,15 +266,13 @@ int main(int argc, char** argv) {
   for (const std::size_t n : sizes) {
     for (std::size_t k = 0; k < kinds.size(); ++k) {
       Case c;
-      c.shape = cs::synth::to_string(kinds[k]);
+      c.shape = kinds[k].name;
       c.points = n;
       c.reps = reps_arg > 0 ? reps_arg : (n <= 100000 ? 15 : 5);
 
       // Untimed: the solid (same for every size of a shape) and its sampling.
-      std::mt19937_64 solid_rng(seed * 1000003u + static_cast<std::uint64_t>(kinds[k]));
-      const cs::synth::SolidSpec spec = cs::synth::random_solid(kinds[k], solid_rng, size);
       std::mt19937_64 sample_rng(seed ^ (n * 0x9E3779B97F4A7C15ull));
-      cs::PointList cloud = cs::synth::sample_solid_surface(spec, n, sample_rng);
+      cs::PointList cloud = kinds[k].sample(n, sample_rng);
       if (noise > 0) cs::synth::add_gaussian_noise(cloud, noise * size, sample_rng);
       const std::string source = c.shape + "-" + std::to_string(n);
 
