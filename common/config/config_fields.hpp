@@ -52,6 +52,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("convex_share", c.convex_share);
   f("crease_overlap", c.crease_overlap);
   f("crease_band", c.crease_band);
+  f("flat_junction_length", c.flat_junction_length);
   f("concave_cut_band", c.concave_cut_band);
   f("concave_cut_cross_share", c.concave_cut_cross_share);
   f("cavity_concavity", c.cavity_concavity);

@@ -107,8 +107,9 @@ struct SegmentConfig {
   double convex_share = 0.5;               // adjacent patches join when at least this share of their junction is convex
   double crease_overlap = 0.5;             // ... and, meeting at an angle, their spans along the crease overlap by this share of the shorter (0: off)
   double crease_band = 4.0;                // ... (each patch's nodes within this many node spacings of the other's plane)
+  double flat_junction_length = 0.5;       // organized: two parallel patches side by side join only along at least this many times the square root of the smaller one's nodes
   double concave_cut_band = 3.0;           // organized: a segment whose flat patch meets another of its patches concavely is cut along its plane: within this many node spacings of it is on it ...
-  double concave_cut_cross_share = 0.05;   // ... unless a patch has more than this share of its nodes beyond the band on both sides (a face runs through the cut)
+  double concave_cut_cross_share = 0.05;   // ... a patch with more than this share of its surface nodes beyond the band on one side goes there; on both, a flat one (a face through the cut) or one not two flat pieces stops the cut
   double cavity_concavity = 0.3;           // a segment this concave towards the sensor (mean n . (x - c) over its RMS spread) is a container's inside: it joins the container ...
   double cavity_gap = 10.0;                 // ... the segment with the most nodes within this many node spacings of it
   std::int64_t structure_max_planes = 8;   // structure planes (table, floor, walls) removed at most
@@ -187,7 +188,7 @@ struct SolveConfig {
   double prism_corner_gap = 8.0;         // two prism sides meet at a corner when one's points end this near (resolutions) where the next's begin
   double prism_outline_cell = 2.0;       // a cap's outline (a prism seen from one side) is traced on cells this wide (resolutions)
   double prism_min_turn_degrees = 20.0;  // a prism's outline turns at least this much at every corner: shallower is a curved side cut into strips
-  double prism_notch_outside_share = 0.02;  // an object given alone whose cap outline has a concave corner no side face shows: at most this share of its points outside that outline
+  double prism_notch_outside_share = 0.02;  // an object alone in its cloud (no viewpoint) whose cap outline has a concave corner no side face shows: at most this share of its points outside that outline
   double prism_notch_min_share = 0.1;    // ... and the notches take at least this share of the outline's convex hull (less is a dented border)
   double prism_corner_cut_cells = 3.0;   // a cap-outline side no face shows, shorter than this (outline cells): a rounded corner, its neighbours meet
   double prism_border_band_cells = 2.0;  // cap border points this near the outline (outline cells) place its sides

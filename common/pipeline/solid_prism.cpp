@@ -64,7 +64,7 @@ bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
       sum += at[j] * static_cast<double>(c.caps[j]->inliers.size());
       points += static_cast<double>(c.caps[j]->inliers.size());
     }
-    if (std::abs(sum / points - (up ? hi : lo)) > band) return false;
+    if (!(points > 0.0) || std::abs(sum / points - (up ? hi : lo)) > band) return false;
   }
   return true;
 }
@@ -437,9 +437,10 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // Corner k joins side k and side k+1: the polygon's edge k+1 runs from corner k to k+1.
   if (polygon.size() < 3 || !(geometry::signed_area(polygon) > 0.0) || !geometry::is_simple(polygon))
     return std::nullopt;
-  // A cap's border is ragged and notched where something hid it: in a scene (a viewpoint known)
-  // a neighbour may have, and a concave corner between two sides only that border shows is no
-  // evidence of the cross-section. An object given alone has nothing beside it: such a notch is
+  // A cap's border is ragged and notched where something hid it: in a scene (a sensor's
+  // viewpoint known, or other objects in the cloud) a neighbour may have, and a concave corner
+  // between two sides only that border shows is no evidence of the cross-section. An object
+  // alone in its cloud (SolveInput::alone) has nothing beside it: such a notch is
   // the cross-section's where it is deep (the notches take solve.prism_notch_min_share of the
   // outline's convex hull) and nothing of the object stands in it (a sparse stretch of the cap's
   // border has the solid's own sides beyond it: no more than solve.prism_notch_outside_share of
@@ -451,7 +452,7 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
     if (turn < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) border_notch = true;
   }
   if (border_notch) {
-    if (in.viewpoint) return std::nullopt;
+    if (!in.alone) return std::nullopt;
     // A shallow notch is a dented border (a real box's rounded or crushed edge), not a notch.
     const double hull = std::abs(geometry::signed_area(geometry::convex_hull_2d(polygon)));
     if (!(hull - geometry::signed_area(polygon) >= in.cfg.prism_notch_min_share * hull)) return std::nullopt;

@@ -37,9 +37,9 @@ struct SolveInput {
   double resolution;
   const config::SolveConfig& cfg;
   const geometry::KdTree* tree = nullptr;  // over `cloud`, when the caller has one to share
-  // The sensor's position when the object came from a scene seen by one (organized clouds, lidar
-  // frames); none for an object given alone.
-  std::optional<Point> viewpoint;
+  // The object was the only one in its cloud, and no sensor's viewpoint came with it (organized
+  // clouds and lidar frames are scenes): nothing beside it could have hidden part of it.
+  bool alone = false;
 
   // Normals over the whole cloud, estimated on first use and shared by the fitters that
   // need them (cylinder and cone without a face to seed them).

@@ -131,7 +131,7 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
-                          const std::optional<Point>& viewpoint) {
+                          const std::optional<Point>& viewpoint, std::size_t objects_in_cloud) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -143,7 +143,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
   input.tree = tree;
-  input.viewpoint = viewpoint;
+  input.alone = !viewpoint && objects_in_cloud == 1;
   const double tolerance = cfg.inlier_distance * resolution;
   const double diameter = 2.0 * keypoints.reference.radius;
   std::vector<std::pair<FittedSolid, Verification>> fitted;

@@ -18,11 +18,13 @@ namespace cloudshape::pipeline {
 // explains at least cfg.min_inlier_fraction of the points.
 // `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages). With the
 // sensor's `viewpoint` known (organized clouds), a sphere seen from its hollow side is a
-// container's inside (container.hpp).
+// container's inside (container.hpp). `objects_in_cloud`: how many objects the cloud this one
+// came from held; only an object alone, with no viewpoint, may show a notch on its cap's border
+// alone (solid_prism.cpp: nothing beside it could have hidden that stretch of the cap).
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,
                           const geometry::KdTree* tree = nullptr,
-                          const std::optional<Point>& viewpoint = std::nullopt);
+                          const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1);
 
 }  // namespace cloudshape::pipeline

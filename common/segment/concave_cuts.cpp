@@ -37,11 +37,10 @@ struct Cut {
 
 std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::vector<std::int32_t>& patch,
                                                 const std::vector<char>& surface, std::int32_t& patches,
-                                                std::vector<std::uint32_t> group,
-                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& concave,
-                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
+                                                std::vector<std::uint32_t> group, JunctionPairs pairs,
+                                                const std::function<JunctionPairs(const std::vector<std::int32_t>&)>& rejudge,
                                                 const config::SegmentConfig& cfg) {
-  if (concave.empty() || !(cfg.concave_cut_band > 0.0)) return group;
+  if (pairs.concave.empty() || !(cfg.concave_cut_band > 0.0)) return group;
   const auto min_nodes = static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.min_object_nodes));
   std::vector<std::vector<std::uint32_t>> members(static_cast<std::size_t>(patches));  // surface nodes
   std::vector<std::vector<std::uint32_t>> all(static_cast<std::size_t>(patches));      // every node
@@ -107,15 +106,15 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
       return group[q] == group[at] && members[q].size() >= min_nodes &&
              std::find(cut.split.begin(), cut.split.end(), q) == cut.split.end();
     };
-    for (const auto& [p, q] : edges)
+    for (const auto& [p, q] : pairs.edges)
       if (whole(p) && whole(q) && positive(p) != positive(q)) return std::nullopt;
     return cut;
   };
 
   // Each cut splits a segment in two, so there are fewer cuts than nodes.
   for (std::size_t round = 0; round < g.size(); ++round) {
-    bool made = false;
-    for (const auto& [a, b] : concave) {
+    bool made = false, split_any = false;
+    for (const auto& [a, b] : pairs.concave) {
       if (group[a] != group[b]) continue;
       std::vector<std::uint32_t> in_segment;
       for (std::uint32_t q = 0; q < group.size(); ++q)
@@ -141,6 +140,7 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
           all.push_back(std::move(moved_all)), members.push_back(std::move(moved_members));
           group.push_back(next_group);
         }
+        split_any = !cut->split.empty();
         ++next_group;
         made = true;
         break;
@@ -148,6 +148,7 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
       if (made) break;
     }
     if (!made) break;
+    if (split_any) pairs = rejudge(patch);
   }
   return group;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -11,10 +12,17 @@
 
 namespace cloudshape::segment {
 
+// Pairs of adjacent patches (lower id first, in the order of their ids): `concave`, whose
+// junction is mostly concave; `edges`, whose junction is mostly a convex edge (normals turned
+// apart beyond the convex tolerance).
+struct JunctionPairs {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> concave, edges;
+};
+
 // `patch`: per node its smooth patch (0..patches-1) or -1; `surface`: per node whether it is a
 // surface node (edge bands blur two faces and judge nothing); `group`: per patch its segment;
-// `concave`: pairs of adjacent patches whose junction is mostly concave; `edges`: pairs whose
-// junction is mostly a convex edge (normals turned apart beyond the convex tolerance).
+// `pairs`: the patches' junctions, and `rejudge` the junctions of any labelling (called after a
+// cut splits a patch, so that its two pieces are judged apart).
 //
 // Local convexity joins two solids whenever any path of convex junctions links them: a box on a
 // slightly larger box is one segment through their sides, although the lower box's top meets the
@@ -32,11 +40,9 @@ namespace cloudshape::segment {
 // faces, a can's lid and side cut apart where a taller can beside it rises above the lid), and
 // each side must hold at least cfg.min_object_nodes nodes. Cuts
 // repeat until none is left. Returns the new segment of every patch (new ids appended).
-std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& graph, std::vector<std::int32_t>& patch,
-                                                const std::vector<char>& surface, std::int32_t& patches,
-                                                std::vector<std::uint32_t> group,
-                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& concave,
-                                                const std::vector<std::pair<std::uint32_t, std::uint32_t>>& edges,
-                                                const config::SegmentConfig& cfg);
+std::vector<std::uint32_t> cut_at_concave_faces(
+    const NeighbourGraph& graph, std::vector<std::int32_t>& patch, const std::vector<char>& surface,
+    std::int32_t& patches, std::vector<std::uint32_t> group, JunctionPairs pairs,
+    const std::function<JunctionPairs(const std::vector<std::int32_t>& patch)>& rejudge, const config::SegmentConfig& cfg);
 
 }  // namespace cloudshape::segment

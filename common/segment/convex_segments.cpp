@@ -152,27 +152,52 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     });
   }
 
-  // Every edge between two patches votes on their junction: convex or concave.
+  // Every edge between two patches votes on their junction: convex or concave. Judged again
+  // after a concave cut splits a patch (the junctions of its two pieces).
   struct Junction {
     std::uint32_t convex = 0;
     std::uint32_t total = 0;
     std::uint32_t edge = 0;  // convex and at an angle: an edge between two faces of one solid
   };
-  std::unordered_map<std::uint64_t, Junction> junctions;
-  for (std::uint32_t a = 0; a < g.size(); ++a) {
-    if (patch[a] < 0) continue;
-    g.for_neighbours(a, [&](std::uint32_t b) {
-      if (b <= a || patch[b] < 0 || patch[b] == patch[a]) return;
-      Junction& j = junctions[pair_key(static_cast<std::uint32_t>(patch[a]), static_cast<std::uint32_t>(patch[b]))];
-      ++j.total;
-      const std::uint32_t oa = origin[a];
-      const std::uint32_t ob = origin[b];
-      const bool flat = g.normals[oa].dot(g.normals[ob]) >= tolerance_cos;
-      const bool turns_out = (g.normals[oa] - g.normals[ob]).dot(g.nodes[oa] - g.nodes[ob]) >= 0.0;
-      if (flat || turns_out) ++j.convex;
-      if (!flat && turns_out) ++j.edge;
-    });
-  }
+  const auto judge_junctions = [&](const std::vector<std::int32_t>& labels) {
+    std::unordered_map<std::uint64_t, Junction> out;
+    for (std::uint32_t a = 0; a < g.size(); ++a) {
+      if (labels[a] < 0) continue;
+      g.for_neighbours(a, [&](std::uint32_t b) {
+        if (b <= a || labels[b] < 0 || labels[b] == labels[a]) return;
+        Junction& j = out[pair_key(static_cast<std::uint32_t>(labels[a]), static_cast<std::uint32_t>(labels[b]))];
+        ++j.total;
+        const std::uint32_t oa = origin[a];
+        const std::uint32_t ob = origin[b];
+        const bool flat = g.normals[oa].dot(g.normals[ob]) >= tolerance_cos;
+        const bool turns_out = (g.normals[oa] - g.normals[ob]).dot(g.nodes[oa] - g.nodes[ob]) >= 0.0;
+        if (flat || turns_out) ++j.convex;
+        if (!flat && turns_out) ++j.edge;
+      });
+    }
+    return out;
+  };
+  const auto is_convex = [&](const Junction& j) {
+    return static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total);
+  };
+  const auto is_edge = [&](const Junction& j) {
+    return static_cast<double>(j.edge) >= cfg.convex_share * static_cast<double>(j.total);
+  };
+  // The concave junctions and the convex edges, in the order of their keys.
+  const auto pairs_of = [&](const std::unordered_map<std::uint64_t, Junction>& judged) {
+    std::vector<std::uint64_t> sorted;
+    for (const auto& entry : judged) sorted.push_back(entry.first);
+    std::sort(sorted.begin(), sorted.end());
+    JunctionPairs out;
+    for (std::uint64_t key : sorted) {
+      const std::pair<std::uint32_t, std::uint32_t> ab{static_cast<std::uint32_t>(key >> 32),
+                                                       static_cast<std::uint32_t>(key & 0xffffffffu)};
+      if (!is_convex(judged.at(key))) out.concave.push_back(ab);
+      if (is_edge(judged.at(key))) out.edges.push_back(ab);
+    }
+    return out;
+  };
+  std::unordered_map<std::uint64_t, Junction> junctions = judge_junctions(patch);
   UnionFind segments(static_cast<std::size_t>(patches));
   std::vector<std::size_t> patch_size(static_cast<std::size_t>(patches), 0);
   for (std::uint32_t n = 0; n < g.size(); ++n) {
@@ -197,15 +222,19 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   std::sort(keys.begin(), keys.end());
   std::vector<std::vector<std::uint32_t>> rejected(static_cast<std::size_t>(patches));
   std::vector<std::uint64_t> sliver_joins;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> concave, edges;
   for (std::uint64_t key : keys) {
     const Junction& j = junctions.at(key);
     const auto a = static_cast<std::uint32_t>(key >> 32);
     const auto b = static_cast<std::uint32_t>(key & 0xffffffffu);
-    const bool convex = static_cast<double>(j.convex) >= cfg.convex_share * static_cast<double>(j.total);
-    if (!convex) concave.emplace_back(a, b);
-    if (static_cast<double>(j.edge) >= cfg.convex_share * static_cast<double>(j.total)) edges.emplace_back(a, b);
-    const bool joins = convex && (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
+    const bool convex = is_convex(j);
+    // Two patches side by side and parallel (two cans' lids at one height, touching) meet along a
+    // few edges; one face parted by a seam of edge nodes meets itself along the seam's length.
+    const bool parallel = !is_edge(j);
+    const bool long_enough =
+        !depth_image || !parallel ||
+        static_cast<double>(j.total) >=
+            cfg.flat_junction_length * std::sqrt(static_cast<double>(std::min(patch_size[a], patch_size[b])));
+    const bool joins = convex && long_enough && (!crease || crease->shares_crease(a, b, tolerance_cos, cfg.crease_overlap));
     const bool slivers =
         depth_image && static_cast<std::int64_t>(std::min(patch_size[a], patch_size[b])) < cfg.min_object_nodes;
     if (slivers) {
@@ -249,7 +278,12 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     for (std::uint32_t p = 0; p < static_cast<std::uint32_t>(patches); ++p) group[p] = segments.find(p);
     std::vector<char> surface(g.size(), 0);
     for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
-    group = cut_at_concave_faces(g, patch, surface, patches, std::move(group), concave, edges, cfg);
+    const std::int32_t before = patches;
+    group = cut_at_concave_faces(g, patch, surface, patches, std::move(group), pairs_of(junctions),
+                                 [&](const std::vector<std::int32_t>& labels) { return pairs_of(judge_junctions(labels)); },
+                                 cfg);
+    // A split patch's pieces have junctions of their own, which the small segments below go by.
+    if (patches != before) junctions = judge_junctions(patch);
     UnionFind cut(static_cast<std::size_t>(patches));
     std::unordered_map<std::uint32_t, std::uint32_t> first_of_group;
     for (std::uint32_t p = 0; p < static_cast<std::uint32_t>(patches); ++p) {

@@ -200,16 +200,7 @@ int main(int argc, char** argv) {
   } else {
     shape_names = split(shapes_arg);
   }
-  std::vector<cs::bench::SpeedShape> kinds;
-  for (const auto& name : shape_names) {
-    auto shape = cs::bench::speed_shape(name, size, seed);
-    if (!shape) {
-      std::fprintf(stderr, "cloudshape-bench: --shapes: unknown shape '%s'\n", name.c_str());
-      return 2;
-    }
-    kinds.push_back(std::move(*shape));
-  }
-  if (sizes.empty() || kinds.empty() || reps_arg < 0 || warmup < 0 || size <= 0 || noise < 0) {
+  if (sizes.empty() || shape_names.empty() || reps_arg < 0 || warmup < 0 || size <= 0 || noise < 0) {
     std::fprintf(stderr, "cloudshape-bench: nothing to run (check the arguments)\n");
     return 2;
   }
@@ -260,6 +251,15 @@ int main(int argc, char** argv) {
     return cs::bench::run_scenes(scenes, cfg);
   }
 
+  std::vector<cs::bench::SpeedShape> kinds;
+  for (const auto& name : shape_names) {
+    auto shape = cs::bench::speed_shape(name, size, seed);
+    if (!shape) {
+      std::fprintf(stderr, "cloudshape-bench: --shapes: unknown shape '%s'\n", name.c_str());
+      return 2;
+    }
+    kinds.push_back(std::move(*shape));
+  }
   // Progress only on a terminal: redirected output stays the table alone.
   const bool progress = isatty(fileno(stderr)) != 0;
   std::vector<Case> cases;
