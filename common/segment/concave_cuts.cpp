@@ -111,14 +111,22 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
     return cut;
   };
 
+  // A pair that found no cut is not tried again until its segment changes (a cut elsewhere
+  // leaves it as it was): `version` counts each segment's cuts, `tried` the version a pair failed at.
+  std::vector<std::uint32_t> version(next_group, 0);
+  constexpr std::uint32_t kNever = 0xffffffffu;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> tried(pairs.concave.size(), {kNever, 0});
   // Each cut splits a segment in two, so there are fewer cuts than nodes.
   for (std::size_t round = 0; round < g.size(); ++round) {
     bool made = false, split_any = false;
-    for (const auto& [a, b] : pairs.concave) {
+    for (std::size_t k = 0; k < pairs.concave.size(); ++k) {
+      const auto [a, b] = pairs.concave[k];
       if (group[a] != group[b]) continue;
+      if (tried[k].first == group[a] && tried[k].second == version[group[a]]) continue;
+      const std::uint32_t segment = group[a];
       std::vector<std::uint32_t> in_segment;
       for (std::uint32_t q = 0; q < group.size(); ++q)
-        if (group[q] == group[a]) in_segment.push_back(q);
+        if (group[q] == segment) in_segment.push_back(q);
       for (const auto& [at, other] : {std::pair{a, b}, std::pair{b, a}}) {
         const std::optional<Plane> face = flat_plane(g, members[at], min_nodes, cfg);
         if (!face) continue;
@@ -141,14 +149,20 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
           group.push_back(next_group);
         }
         split_any = !cut->split.empty();
+        ++version[segment];
+        version.push_back(0);
         ++next_group;
         made = true;
         break;
       }
       if (made) break;
+      tried[k] = {segment, version[segment]};
     }
     if (!made) break;
-    if (split_any) pairs = rejudge(patch);
+    if (split_any) {
+      pairs = rejudge(patch);
+      tried.assign(pairs.concave.size(), {kNever, 0});
+    }
   }
   return group;
 }
