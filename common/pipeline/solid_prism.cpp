@@ -34,6 +34,26 @@ struct AxisChoice {
   bool cap_reading = false;  // a face's normal with three sides or more, read from the cap's outline
 };
 
+// Noise splits a cap into parallel planes a little apart (within inlier_distance of each other):
+// the pieces of caps[k]'s cap are the caps facing its way along `axis` whose positions (`at`,
+// along `axis`) lie that near its own, itself included, in the order of `caps`.
+std::vector<std::size_t> cap_pieces(const SolveInput& in, const std::vector<const DetectedPlane*>& caps,
+                                    const std::vector<double>& at, std::size_t k, const Eigen::Vector3d& axis) {
+  const double same_cap = in.cfg.inlier_distance * in.resolution;
+  const bool up = caps[k]->plane.normal.dot(axis) > 0;
+  std::vector<std::size_t> out;
+  for (std::size_t j = 0; j < caps.size(); ++j)
+    if ((caps[j]->plane.normal.dot(axis) > 0) == up && std::abs(at[j] - at[k]) <= same_cap) out.push_back(j);
+  return out;
+}
+
+std::vector<double> cap_positions(const SolveInput& in, const std::vector<const DetectedPlane*>& caps,
+                                  const Eigen::Vector3d& axis) {
+  std::vector<double> at;
+  for (const DetectedPlane* f : caps) at.push_back(detail::face_position(in.cloud, *f, axis));
+  return at;
+}
+
 // A right prism has two cap planes, at its two ends: a face along the axis anywhere between
 // them (the inner step of an L seen along one of its arms) says the axis is another.
 bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
@@ -44,16 +64,12 @@ bool caps_at_ends(const SolveInput& in, const AxisChoice& c) {
     hi = std::max(hi, p.dot(c.axis));
   }
   const double band = std::max(in.cfg.cap_band * in.resolution, in.cfg.face_slab * (hi - lo));
-  // Noise splits a cap into parallel planes a little apart (within inlier_distance of each
-  // other): a cap's place is where all of its points are, not where the smallest piece is.
-  const double same_cap = in.cfg.inlier_distance * in.resolution;
-  std::vector<double> at(c.caps.size());
-  for (std::size_t k = 0; k < c.caps.size(); ++k) at[k] = detail::face_position(in.cloud, *c.caps[k], c.axis);
+  // A cap's place is where all of its pieces' points are, not where the smallest piece is.
+  const std::vector<double> at = cap_positions(in, c.caps, c.axis);
   for (std::size_t k = 0; k < c.caps.size(); ++k) {
     const bool up = c.caps[k]->plane.normal.dot(c.axis) > 0;
     double sum = 0.0, points = 0.0;
-    for (std::size_t j = 0; j < c.caps.size(); ++j) {
-      if ((c.caps[j]->plane.normal.dot(c.axis) > 0) != up || std::abs(at[j] - at[k]) > same_cap) continue;
+    for (std::size_t j : cap_pieces(in, c.caps, at, k, c.axis)) {
       sum += at[j] * static_cast<double>(c.caps[j]->inliers.size());
       points += static_cast<double>(c.caps[j]->inliers.size());
     }
@@ -262,16 +278,13 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   bool from_cap = false;
   if (!chained && !choice.caps.empty()) {
     std::size_t matched = 0;
-    // Noise splits a cap into parallel planes a little apart: its outline is traced on all of
-    // them, as caps_at_ends places it (one piece alone is a sparse, notched copy of the cap).
+    // The outline is traced on all of the cap's pieces (one piece alone is a sparse, notched copy
+    // of the cap).
     DetectedPlane cap = *choice.caps.front();
-    const double same_cap = in.cfg.inlier_distance * in.resolution;
-    const double at = detail::face_position(in.cloud, cap, axis);
-    for (std::size_t k = 1; k < choice.caps.size(); ++k) {
+    const std::vector<double> at = cap_positions(in, choice.caps, axis);
+    for (std::size_t k : cap_pieces(in, choice.caps, at, 0, axis)) {
+      if (k == 0) continue;
       const DetectedPlane& piece = *choice.caps[k];
-      if (piece.plane.normal.dot(cap.plane.normal) <= 0.0 ||
-          std::abs(detail::face_position(in.cloud, piece, axis) - at) > same_cap)
-        continue;
       cap.inliers.insert(cap.inliers.end(), piece.inliers.begin(), piece.inliers.end());
       cap.boundary.insert(cap.boundary.end(), piece.boundary.begin(), piece.boundary.end());
     }

@@ -183,13 +183,18 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   const auto is_edge = [&](const Junction& j) {
     return static_cast<double>(j.edge) >= cfg.convex_share * static_cast<double>(j.total);
   };
-  // The concave junctions and the convex edges, in the order of their keys.
-  const auto pairs_of = [&](const std::unordered_map<std::uint64_t, Junction>& judged) {
+  // The junctions' keys in order: the same joins whatever the map's iteration order.
+  const auto sorted_keys = [](const std::unordered_map<std::uint64_t, Junction>& judged) {
     std::vector<std::uint64_t> sorted;
+    sorted.reserve(judged.size());
     for (const auto& entry : judged) sorted.push_back(entry.first);
     std::sort(sorted.begin(), sorted.end());
+    return sorted;
+  };
+  // The concave junctions and the convex edges, in the order of their keys.
+  const auto pairs_of = [&](const std::unordered_map<std::uint64_t, Junction>& judged) {
     JunctionPairs out;
-    for (std::uint64_t key : sorted) {
+    for (std::uint64_t key : sorted_keys(judged)) {
       const std::pair<std::uint32_t, std::uint32_t> ab{static_cast<std::uint32_t>(key >> 32),
                                                        static_cast<std::uint32_t>(key & 0xffffffffu)};
       if (!is_convex(judged.at(key))) out.concave.push_back(ab);
@@ -216,10 +221,7 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
     for (std::uint32_t n = 0; n < g.size(); ++n) surface[n] = patch[n] >= 0 && origin[n] == n;
     crease.emplace(g, patch, surface, patches, cfg.crease_band);
   }
-  std::vector<std::uint64_t> keys;
-  keys.reserve(junctions.size());
-  for (const auto& entry : junctions) keys.push_back(entry.first);
-  std::sort(keys.begin(), keys.end());
+  const std::vector<std::uint64_t> keys = sorted_keys(junctions);
   std::vector<std::vector<std::uint32_t>> rejected(static_cast<std::size_t>(patches));
   std::vector<std::uint64_t> sliver_joins;
   for (std::uint64_t key : keys) {
