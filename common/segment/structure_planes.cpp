@@ -67,32 +67,42 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   // Every hypothesis' seed drawn first, in order from the one generator; then the scoring in
   // blocks (any thread count), and the best taken in hypothesis order: the serial answer.
   const std::size_t hypotheses = static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.structure_hypotheses));
-  std::vector<geometry::Plane> planes(hypotheses);
-  for (geometry::Plane& p : planes) {
-    const std::uint32_t s = seeds[pick(rng)];
-    p.normal = g.normals[s];
-    p.offset = -p.normal.dot(g.nodes[s]);
+  std::vector<std::uint32_t> drawn(hypotheses);
+  for (std::uint32_t& seed : drawn) seed = seeds[pick(rng)];
+  // A seed drawn again is the same plane: only its first draw is scored. A later draw could only
+  // tie with it, and ties go to the earlier hypothesis, so the best is the same. A noisy solid
+  // has few flat nodes to seed from, and draws most of them many times.
+  std::vector<char> seen(g.size(), 0);
+  std::vector<geometry::Plane> planes;
+  for (std::uint32_t seed : drawn) {
+    if (seen[seed]) continue;
+    seen[seed] = 1;
+    geometry::Plane p;
+    p.normal = g.normals[seed];
+    p.offset = -p.normal.dot(g.nodes[seed]);
+    planes.push_back(p);
   }
   // A hypothesis only wins with more inliers than every one before it: its count stops once it
   // cannot beat the best earlier one known (the first block's, then its own block's), and the
   // first best stays the same for any thread count.
   constexpr std::size_t kHypothesesPerBlock = 8;
-  std::vector<std::size_t> scores(hypotheses, 0);
+  const std::size_t distinct = planes.size();
+  std::vector<std::size_t> scores(distinct, 0);
   const auto score_block = [&](std::size_t begin, std::size_t end, std::size_t known) {
     for (std::size_t h = begin; h < end; ++h) {
       scores[h] = count_plane_inliers(scored, planes[h], min_cos, known);
       known = std::max(known, scores[h]);  // a count stopped early is no more than `known`
     }
   };
-  const std::size_t first = std::min(hypotheses, kHypothesesPerBlock);
+  const std::size_t first = std::min(distinct, kHypothesesPerBlock);
   score_block(0, first, 0);
   const std::size_t first_best = first == 0 ? 0 : *std::max_element(scores.begin(), scores.begin() + first);
-  parallel::for_blocks(pool, hypotheses - first, kHypothesesPerBlock, [&](std::size_t begin, std::size_t end) {
+  parallel::for_blocks(pool, distinct - first, kHypothesesPerBlock, [&](std::size_t begin, std::size_t end) {
     score_block(first + begin, first + end, first_best);
   });
   geometry::Plane best;
   std::size_t best_score = 0;
-  for (std::size_t h = 0; h < hypotheses; ++h) {
+  for (std::size_t h = 0; h < distinct; ++h) {
     if (scores[h] > best_score) {
       best_score = scores[h];
       best = planes[h];
