@@ -334,6 +334,13 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const double area = static_cast<double>(occupied_cells(g, fit.inliers, fit.plane, cell));
     const double footprint = static_cast<double>(occupied_cells(g, standing, fit.plane, cell));
     const double ratio = footprint > 0.0 ? area / footprint : 0.0;
+    // A plane reaching too little beyond what stands on it supports nothing, whatever stands
+    // inside it; and only a frame seen from inside may still make it a wall: so a solid's own face,
+    // most of the planes tried, costs no more.
+    if (ratio < cfg.structure_reach && !(from_inside && g.viewpoint)) {
+      for (std::uint32_t n : fit.inliers) tried[n] = 1;
+      continue;
+    }
     // Every node in the plane's band, its connected part or not: the table beyond an object's shadow
     // is cut off from the part in front of it, and still shows where the table reaches.
     const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
