@@ -144,6 +144,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("min_side_arc_degrees", c.min_side_arc_degrees);
   f("cylinder_refine_band", c.cylinder_refine_band);
   f("cylinder_refine_iterations", c.cylinder_refine_iterations);
+  f("frustum_side_samples", c.frustum_side_samples);
   f("cap_circle_agreement", c.cap_circle_agreement);
   f("min_side_share", c.min_side_share);
   f("max_size_ratio", c.max_size_ratio);

@@ -151,6 +151,7 @@ struct SolveConfig {
   double min_side_arc_degrees = 90.0;    // ... and only if its side's explained points cover this arc around the axis
   double cylinder_refine_band = 6.0;     // a cylinder axis from side normals is refined on side points within this (resolutions) of its side ...
   std::int64_t cylinder_refine_iterations = 15;  // ... in at most this many Gauss-Newton steps (0: the normals' axis as it is)
+  std::int64_t frustum_side_samples = 4000;  // a frustum from its side alone is refined on at most this many points, evenly strided (0: all)
   double inside_view_share = 0.5;        // a sphere, cone or frustum whose surface mostly (this share of the points) faces away from the sensor is seen from its hollow side: a container
   double container_rim_quantile = 0.995;  // ... whose envelope cylinder reaches this quantile of the points' distances from its axis and along it
   double rim_distance = 3.0;             // points this far (resolutions) beyond a cylinder cap are a rim: height includes it

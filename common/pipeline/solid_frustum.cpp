@@ -59,8 +59,16 @@ std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
   const double band = in.cfg.cylinder_refine_band * in.resolution;
   std::optional<detail::SideCone> cone;
   std::size_t cone_near = 0;
+  // Six parameters need no ten thousand points: the refinement runs on at most
+  // cfg.frustum_side_samples of them, evenly strided over the cloud (its Gauss-Newton steps pass
+  // over every point they are given, 2 x 15 times per start: a third of a cylindric Kinect frame).
+  const auto budget = static_cast<std::size_t>(std::max<std::int64_t>(0, in.cfg.frustum_side_samples));
+  const std::size_t stride = budget == 0 ? 1 : std::max<std::size_t>(1, (side.size() + budget - 1) / budget);
+  std::vector<std::uint32_t> fit_side;
+  fit_side.reserve(side.size() / stride + 1);
+  for (std::size_t i = 0; i < side.size(); i += stride) fit_side.push_back(side[i]);
   for (const detail::SideCone& start : starts) {
-    const auto fit = detail::refine_side_cone(in.cloud, side, start, std::max(band, 0.25 * start.radius), band,
+    const auto fit = detail::refine_side_cone(in.cloud, fit_side, start, std::max(band, 0.25 * start.radius), band,
                                               static_cast<int>(in.cfg.cylinder_refine_iterations));
     if (!fit) continue;
     std::size_t near = 0;
