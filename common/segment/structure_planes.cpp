@@ -67,14 +67,13 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   // Every hypothesis' seed drawn first, in order from the one generator; then the scoring in
   // blocks (any thread count), and the best taken in hypothesis order: the serial answer.
   const std::size_t hypotheses = static_cast<std::size_t>(std::max<std::int64_t>(0, cfg.structure_hypotheses));
-  std::vector<std::uint32_t> drawn(hypotheses);
-  for (std::uint32_t& seed : drawn) seed = seeds[pick(rng)];
   // A seed drawn again is the same plane: only its first draw is scored. A later draw could only
   // tie with it, and ties go to the earlier hypothesis, so the best is the same. A noisy solid
   // has few flat nodes to seed from, and draws most of them many times.
   std::vector<char> seen(g.size(), 0);
   std::vector<geometry::Plane> planes;
-  for (std::uint32_t seed : drawn) {
+  for (std::size_t h = 0; h < hypotheses; ++h) {
+    const std::uint32_t seed = seeds[pick(rng)];
     if (seen[seed]) continue;
     seen[seed] = 1;
     geometry::Plane p;
@@ -337,7 +336,8 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     // A plane reaching too little beyond what stands on it supports nothing, whatever stands
     // inside it; and only a frame seen from inside may still make it a wall: so a solid's own face,
     // most of the planes tried, costs no more.
-    if (ratio < cfg.structure_reach && !(from_inside && g.viewpoint)) {
+    const bool may_enclose = from_inside && g.viewpoint.has_value();
+    if (ratio < cfg.structure_reach && !may_enclose) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
       continue;
     }
@@ -353,7 +353,7 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     const std::size_t inside = standing_inside(g, coplanar, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
     const bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
-    const bool encloses = !supports && from_inside && g.viewpoint && encloses_viewer(g, active, inlier, fit, cfg);
+    const bool encloses = !supports && may_enclose && encloses_viewer(g, active, inlier, fit, cfg);
     if (!supports && !encloses) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
       continue;
