@@ -120,7 +120,14 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   std::int32_t objects = 0;
   std::vector<std::vector<std::uint32_t>> refined;
   for (std::int32_t s = 0; s < segments; ++s) {
-    if (static_cast<double>(members[s].size()) < min_nodes) continue;
+    // In a lidar frame a segment too small at the scene's resolution is tried at its own first: a
+    // ball among ground and walls may be a few dozen of the scene's coarse voxels and hundreds of
+    // points. One with fewer points than cfg.min_object_nodes makes no object at any resolution.
+    const bool few_nodes = static_cast<double>(members[s].size()) < min_nodes;
+    if (few_nodes && (segment_points.empty() ||
+                      static_cast<std::int64_t>(segment_points[s].size()) < cfg.min_object_nodes)) {
+      continue;
+    }
     if (!segment_points.empty()) {
       std::vector<double> spacing;
       for (std::uint32_t n : members[s]) spacing.push_back(g.spacing[n]);
@@ -136,6 +143,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
         continue;
       }
     }
+    if (few_nodes) continue;
     if (narrow[s] && static_cast<double>(members[s].size()) < cfg.fragment_max_share * static_cast<double>(largest)) {
       continue;
     }

@@ -27,7 +27,8 @@ struct SceneSegmentation {
 // its sensor's frame (scan_origin) sees from the origin, and its walls and ground seen from inside
 // are structure too; in an unorganized cloud what the structure leaves is gridded anew when that
 // is much finer (finer_remainder_graph), and in a lidar frame a segment whose own points would grid
-// much finer is segmented again alone (finer_on_its_own): each object at its own resolution; there an object
+// much finer is segmented again alone (finer_on_its_own), one under the node minimum too if it
+// holds that many points: each object at its own resolution; there an object
 // on fewer than cfg.scan_object_min_beams beams, or with cfg.scan_leftover_share of its points in a
 // structure plane's band, is a strip of ground or wall, dropped. A `pool` builds
 // the graph's normals on its threads: the same segments.

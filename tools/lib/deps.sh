@@ -13,13 +13,14 @@ CLOUDSHAPE_BUILD_PACKAGES=(
 # The one list tools/test.sh and tools/demo.sh install: the build plus what the default tests
 # use (Cyclone DDS for the interop test, docker-compose to validate docker/compose.yaml, gdb
 # to kill a service inside a receive in the fault test, shellcheck for the script checks,
-# python3-jsonschema to validate the JSON output against tests/report/result.schema.json).
+# python3-jsonschema to validate the JSON output against tests/report/result.schema.json,
+# python3-numpy for tools/lidar_moved_ball.py, whose documented run the docs test makes).
 CLOUDSHAPE_DEB_PACKAGES=(
   "${CLOUDSHAPE_BUILD_PACKAGES[@]}"
   cyclonedds-dev cyclonedds-tools
   docker-compose
   openssl tcpdump gdb
-  shellcheck python3-jsonschema
+  shellcheck python3-jsonschema python3-numpy
 )
 # Only tools/fuzz.sh needs these: clang and its libFuzzer runtime (libclang_rt.fuzzer).
 # shellcheck disable=SC2034  # read by tools/fuzz.sh
