@@ -2,12 +2,14 @@
 """The real SphereCalib lidar frame with its calibration ball moved, scored through cloudshape-recognize.
 
 Each frame: the frame's own ball (SOURCES.md: centre (1.723, 2.471, 0.009)) taken out; a ball of
-0.25-0.35 m on a 2 cm pole (down to z = -1) scanned anew at a random free spot --min-range to
---max-range from the sensor with the frame's own beams (16, every 2 degrees from -15 to 15,
-0.19 degrees of azimuth, 1 cm range noise); the real returns it shadows taken out. As the test
-LidarBallInRealFrame builds its three frames. A ball is found when the reported object nearest its
-centre is a sphere within 5% of its radius and 5 cm of its centre, with no other object within
-three radii (issue 10's tolerances). Prints one line per frame and the counts per range band.
+radius 0.25-0.35 m on a pole of radius 2 cm (down to z = -1) scanned anew at a random free spot
+--min-range to --max-range from the sensor with the frame's own beams (16, every 2 degrees from
+-15 to 15, 0.19 degrees of azimuth, 1 cm range noise), a new return kept only where no real one
+on its beam and azimuth step is nearer; the real returns behind the ball or its pole taken out.
+The construction of the test LidarBallInRealFrame (its noise drawn by another generator). A ball
+is found when the reported object nearest its centre is a sphere within 5% of its radius and 5 cm
+of its centre, with no other object within three radii (issue 10's tolerances). Prints one line
+per frame and the counts per range band.
 
   tools/lidar_moved_ball.py [--frames 40] [--seed 7] [--min-range 2] [--max-range 5.5]
                             [--bin build/bin] [--keep DIR]
@@ -30,28 +32,36 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 FRAME = os.path.join(HERE, '..', '..', 'shared', 'data', 'real', 'spherecalib', 'example3_L1_S1_lidar_sphere.xyz')
 
 
-def scan_ball(centre, radius, rng):
-    """The ball's and its pole's returns for the frame's beams, 1 cm range noise."""
-    azimuths = np.radians(np.arange(-180.0, 180.0, 0.19))
-    out = []
-    for elevation in np.radians(np.arange(-15.0, 16.0, 2.0)):
-        d = np.stack([np.cos(elevation) * np.cos(azimuths), np.cos(elevation) * np.sin(azimuths),
-                      np.full_like(azimuths, np.sin(elevation))], axis=1)
-        b = d @ centre
-        disc = b * b - (centre @ centre - radius * radius)
-        t = np.where((disc > 0) & (b > 0), b - np.sqrt(np.maximum(disc, 0)), np.inf)
-        a = d[:, 0] ** 2 + d[:, 1] ** 2
-        bb = -2 * (d[:, 0] * centre[0] + d[:, 1] * centre[1])
-        cc = centre[0] ** 2 + centre[1] ** 2 - 0.02 ** 2
-        disc2 = bb * bb - 4 * a * cc
-        t2 = np.where(disc2 > 0, (-bb - np.sqrt(np.maximum(disc2, 0))) / (2 * a), np.inf)
-        z2 = t2 * d[:, 2]
-        pole = (disc2 > 0) & (t2 > 0) & (z2 < centre[2] - radius) & (z2 > -1.0)
-        t = np.where(pole & (t2 < t), t2, t)
-        hit = np.isfinite(t)
-        ranges = t[hit] + np.array([rng.gauss(0.0, 0.01) for _ in range(int(hit.sum()))])
-        out.append(d[hit] * ranges[:, None])
-    return np.concatenate(out)
+BEAMS = np.radians(np.arange(-15.0, 16.0, 2.0))
+AZIMUTH_STEP = 0.19
+STEPS = int(math.ceil(360.0 / AZIMUTH_STEP))
+
+
+def ray_distance(d, centre, radius):
+    """Per unit ray (rows of d) from the sensor, the distance to the ball or its pole; inf for a miss."""
+    along = d @ centre
+    ball_disc = along * along - (centre @ centre - radius * radius)
+    t = np.where((ball_disc > 0) & (along > 0), along - np.sqrt(np.maximum(ball_disc, 0)), np.inf)
+    # The pole's circle in the horizontal plane: |t d_xy - c_xy| = 0.02.
+    pole_a = d[:, 0] ** 2 + d[:, 1] ** 2
+    pole_b = -2 * (d[:, 0] * centre[0] + d[:, 1] * centre[1])
+    pole_c = centre[0] ** 2 + centre[1] ** 2 - 0.02 ** 2
+    pole_disc = pole_b * pole_b - 4 * pole_a * pole_c
+    ok = (pole_a > 0) & (pole_disc > 0)
+    pole_t = np.where(ok, (-pole_b - np.sqrt(np.maximum(pole_disc, 0))) / np.where(ok, 2 * pole_a, 1), np.inf)
+    z = pole_t * d[:, 2]
+    pole = ok & (pole_t > 0) & (z < centre[2] - radius) & (z > -1.0)
+    return np.where(pole & (pole_t < t), pole_t, t)
+
+
+def beam_and_step(points):
+    """The beam index (-1 off the frame's beams) and azimuth step of each point."""
+    elevation = np.degrees(np.arctan2(points[:, 2], np.hypot(points[:, 0], points[:, 1])))
+    beam = (elevation + 15.0) / 2.0
+    nearest = np.rint(beam).astype(int)
+    nearest[(np.abs(beam - nearest) >= 0.25) | (nearest < 0) | (nearest >= len(BEAMS))] = -1
+    step = np.floor((np.degrees(np.arctan2(points[:, 1], points[:, 0])) + 180.0) / AZIMUTH_STEP).astype(int)
+    return nearest, np.clip(step, 0, STEPS - 1)
 
 
 def make_frame(real, rng, min_range, max_range):
@@ -62,12 +72,25 @@ def make_frame(real, rng, min_range, max_range):
         centre = np.array([distance * math.cos(azimuth), distance * math.sin(azimuth), rng.uniform(-0.3, 0.3)])
         if np.min(np.linalg.norm(real - centre, axis=1)) > radius + 0.3:
             break
-    ball = scan_ball(centre, radius, rng)
-    u = real / np.linalg.norm(real, axis=1)[:, None]
-    b = u @ centre
-    disc = b * b - (centre @ centre - radius * radius)
-    shadowed = (disc > 0) & (b > 0) & (np.linalg.norm(real, axis=1) > b)
-    return np.concatenate([real[~shadowed], ball]), centre, radius, len(ball)
+    else:
+        sys.exit('lidar_moved_ball: no free spot %.1f-%.1f m from the sensor in 1000 draws' % (min_range, max_range))
+    ranges = np.linalg.norm(real, axis=1)
+    kept = real[~(ray_distance(real / ranges[:, None], centre, radius) < ranges)]
+    nearest_real = np.full((len(BEAMS), STEPS), np.inf)
+    beam, step = beam_and_step(kept)
+    on_beam = beam >= 0
+    np.minimum.at(nearest_real, (beam[on_beam], step[on_beam]), np.linalg.norm(kept[on_beam], axis=1))
+    azimuths = np.radians(-180.0 + AZIMUTH_STEP * np.arange(STEPS))
+    new = []
+    for b, elevation in enumerate(BEAMS):
+        d = np.stack([np.cos(elevation) * np.cos(azimuths), np.cos(elevation) * np.sin(azimuths),
+                      np.full_like(azimuths, np.sin(elevation))], axis=1)
+        t = ray_distance(d, centre, radius)
+        hit = np.isfinite(t) & (t < nearest_real[b])
+        noisy = t[hit] + np.array([rng.gauss(0.0, 0.01) for _ in range(int(hit.sum()))])
+        new.append(d[hit] * noisy[:, None])
+    ball = np.concatenate(new)
+    return np.concatenate([kept, ball]), centre, radius, len(ball)
 
 
 def main():
@@ -87,7 +110,8 @@ def main():
     real = np.loadtxt(FRAME)[:, :3]
     real = real[np.linalg.norm(real - REAL_BALL, axis=1) > 0.45]
     rng = random.Random(args.seed)
-    folder = args.keep or tempfile.mkdtemp(prefix='lidar_moved_ball_')
+    scratch = None if args.keep else tempfile.TemporaryDirectory(prefix='lidar_moved_ball_')
+    folder = args.keep or scratch.name
     os.makedirs(folder, exist_ok=True)
     bands = [(0.0, 3.5), (3.5, 4.5), (4.5, math.inf)]
     found = [0] * len(bands)

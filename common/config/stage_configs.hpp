@@ -129,7 +129,7 @@ struct SegmentConfig {
   double remainder_refine = 2.0;           // unorganized: what structure leaves is re-gridded when the node budget alone would make its voxel at least this many times finer
   double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
   double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes
-  std::int64_t min_object_nodes = 30;      // segments with fewer nodes are clutter (lidar: after their own resolution)
+  std::int64_t min_object_nodes = 30;      // segments with fewer nodes are clutter (lidar: after a try alone)
   std::int64_t scan_object_min_beams = 2;  // in a lidar frame (scan_beam_*), an object on fewer beams is a strip of ground or wall: one ring shows no vertical extent (two fix a sphere)
   double scan_leftover_share = 0.5;         // ... and one with this share of its points within structure_band (its own point spacings) of a structure plane is a leftover of it
   double min_object_share = 0.002;         // ... and so are those with less than this share of the nodes

@@ -61,6 +61,27 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
 // (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan);
+
+// The objects in the points `indices` select, segmented again alone, when they would grid finer
+// alone than at `spacing` (finer_on_its_own); none otherwise. Only a strict part of `points`: all
+// of them would be this segmentation again.
+std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
+    const PointList& points, const std::vector<std::uint32_t>& indices, double spacing,
+    const config::SegmentConfig& cfg, parallel::ThreadPool* pool, const std::optional<Point>& scan) {
+  if (indices.size() >= points.size()) return std::nullopt;
+  PointList own;
+  own.reserve(indices.size());
+  for (std::uint32_t i : indices) own.push_back(points[i]);
+  if (!finer_on_its_own(own, spacing, cfg, pool)) return std::nullopt;
+  std::vector<std::vector<std::uint32_t>> parts = segment_part(own, GridLayout{}, cfg, pool, scan).objects;
+  for (auto& part : parts) {
+    for (std::uint32_t& i : part) i = indices[i];
+  }
+  return parts;
+}
+
+SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan) {
   SceneSegmentation out;
   NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
@@ -132,14 +153,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       std::vector<double> spacing;
       for (std::uint32_t n : members[s]) spacing.push_back(g.spacing[n]);
       std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-      PointList own;
-      own.reserve(segment_points[s].size());
-      for (std::uint32_t i : segment_points[s]) own.push_back(points[i]);
-      if (finer_on_its_own(own, spacing[spacing.size() / 2], cfg, pool)) {
-        for (auto& part : segment_part(own, GridLayout{}, cfg, pool, scan).objects) {
-          for (std::uint32_t& i : part) i = segment_points[s][i];
-          refined.push_back(std::move(part));
-        }
+      if (auto parts = at_own_resolution(points, segment_points[s], spacing[spacing.size() / 2], cfg, pool, *scan)) {
+        for (auto& part : *parts) refined.push_back(std::move(part));
         continue;
       }
     }
