@@ -105,10 +105,18 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   // indices through `kept` from then on.
   std::vector<std::uint32_t> kept;
   if (!grid.organized()) {
+    // A coarse voxel where a solid meets its ground or wall holds points of both, and is kept
+    // whole: in the finer graph the structure's points there are taken out again, each within the
+    // plane's noise of the height its points have around it (a lidar's real ground is neither
+    // level nor flat over tens of metres; a ball resting on it keeps all but its lowest point).
+    const std::vector<StructureFootprint> coarse_structure =
+        out.structure.empty() ? std::vector<StructureFootprint>{}
+                              : structure_footprints(points, g, removed, out.structure, cfg, true);
     if (std::optional<RemainderGraph> finer = finer_remainder_graph(points, g, removed, cfg, pool)) {
       g = std::move(finer->graph);
       kept = std::move(finer->points);
       removed.assign(g.size(), 0);
+      for (std::uint32_t n = 0; n < g.size(); ++n) removed[n] = on_structure(coarse_structure, g.nodes[n]) ? 1 : 0;
       // Structure the coarse graph's connected parts missed (ground rings apart from the rest).
       const std::vector<StructurePlane> more = remove_structure(g, cfg, removed, pool, from_inside);
       out.structure.insert(out.structure.end(), more.begin(), more.end());

@@ -18,7 +18,7 @@ std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
 std::vector<StructureFootprint> structure_footprints(const PointList& points, const NeighbourGraph& graph,
                                                      const std::vector<char>& removed,
                                                      const std::vector<StructurePlane>& planes,
-                                                     const config::SegmentConfig& cfg) {
+                                                     const config::SegmentConfig& cfg, bool cell_heights) {
   std::vector<StructureFootprint> out(planes.size());
   if (planes.empty()) return out;
   // Each removed node belongs to the plane nearest to it.
@@ -33,39 +33,69 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
     }
     spacing[plane_of[n]].push_back(graph.spacing[n]);
   }
-  // The noise of the plane's own points: their median absolute distance, scaled to a normal
-  // deviation (1.4826); robust to the cells at an object's foot that hold some of its points.
-  std::vector<std::vector<double>> distance(planes.size());
-  for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
-    const std::uint32_t n = graph.node_of_point[i];
-    if (n == kNoNode || plane_of[n] < 0) continue;
-    distance[plane_of[n]].push_back(std::abs(planes[plane_of[n]].plane.signed_distance(points[i])));
-  }
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
     f.plane = planes[k].plane;
     f.cell = detail::median(spacing[k]);
-    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(distance[k]), cfg.contact_min_band * f.cell);
     geometry::plane_basis(f.plane.normal, f.u, f.v);
   }
-  for (std::uint32_t n = 0; n < graph.size(); ++n) {
-    if (plane_of[n] < 0) continue;
-    StructureFootprint& f = out[plane_of[n]];
-    if (!(f.cell > 0.0)) continue;
-    f.cells.insert(cell_key(static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.u) / f.cell)),
-                            static_cast<std::int64_t>(std::floor(graph.nodes[n].dot(f.v) / f.cell))));
+  const auto key_of = [](const StructureFootprint& f, const Point& p) {
+    return cell_key(static_cast<std::int64_t>(std::floor(p.dot(f.u) / f.cell)),
+                    static_cast<std::int64_t>(std::floor(p.dot(f.v) / f.cell)));
+  };
+  // The noise of the plane's own points: their median absolute distance (from the plane, or from
+  // their cell's height), scaled to a normal deviation (1.4826); robust to the cells at an
+  // object's foot that hold some of its points.
+  std::vector<std::vector<double>> distance(planes.size());
+  if (!cell_heights) {
+    for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
+      const std::uint32_t n = graph.node_of_point[i];
+      if (n == kNoNode || plane_of[n] < 0) continue;
+      distance[plane_of[n]].push_back(std::abs(planes[plane_of[n]].plane.signed_distance(points[i])));
+    }
+    for (std::uint32_t n = 0; n < graph.size(); ++n) {
+      if (plane_of[n] < 0 || !(out[plane_of[n]].cell > 0.0)) continue;
+      out[plane_of[n]].cells.try_emplace(key_of(out[plane_of[n]], graph.nodes[n]), 0.0);
+    }
+  } else {
+    std::vector<std::unordered_map<std::uint64_t, std::vector<double>>> heights(planes.size());
+    for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
+      const std::uint32_t n = graph.node_of_point[i];
+      if (n == kNoNode || plane_of[n] < 0 || !(out[plane_of[n]].cell > 0.0)) continue;
+      const StructureFootprint& f = out[plane_of[n]];
+      heights[plane_of[n]][key_of(f, points[i])].push_back(f.plane.signed_distance(points[i]));
+    }
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      for (const auto& [key, h] : heights[k]) {
+        const double height = detail::median(h);
+        out[k].cells.try_emplace(key, height);
+        for (double x : h) distance[k].push_back(std::abs(x - height));
+      }
+    }
+  }
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    StructureFootprint& f = out[k];
+    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(distance[k]), cfg.contact_min_band * f.cell);
+    for (const auto& [key, height] : f.cells) {
+      f.lowest = std::min(f.lowest, height);
+      f.highest = std::max(f.highest, height);
+    }
   }
   return out;
 }
 
 bool on_structure(const std::vector<StructureFootprint>& footprints, const Point& p) {
   for (const StructureFootprint& f : footprints) {
-    if (f.cells.empty() || !(std::abs(f.plane.signed_distance(p)) <= f.band)) continue;
+    const double d = f.plane.signed_distance(p);
+    if (f.cells.empty() || !(d >= f.lowest - f.band && d <= f.highest + f.band)) continue;
     const auto x = static_cast<std::int64_t>(std::floor(p.dot(f.u) / f.cell));
     const auto y = static_cast<std::int64_t>(std::floor(p.dot(f.v) / f.cell));
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-        if (f.cells.count(cell_key(x + dx, y + dy))) return true;
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto cell = f.cells.find(cell_key(x + dx, y + dy));
+        if (cell != f.cells.end() && std::abs(d - cell->second) <= f.band) return true;
+      }
+    }
   }
   return false;
 }

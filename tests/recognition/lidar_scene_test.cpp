@@ -15,10 +15,10 @@
 namespace cloudshape {
 namespace {
 
-// Tolerance (issue 10): radius within 5%, centre within 10% of the radius, in at least half the
-// frames that see the sphere: today 5 of 10 (the misses: the sphere's top taken with the ground in
-// the scene graph's band, 2-3 voxels of 0.2 m; the sphere's few rings fitting a frustum or
-// cylinder as well); the issue asks for every frame.
+// Tolerance (issue 10): radius within 5%, centre within 10% of the radius, in at least 8 of the
+// 10 frames that see the sphere: today 8 (5 before the ground's points left the finer graph
+// around the ball's foot; the misses, seeds 7 and 8: the ball's few rings fit a frustum as well);
+// the issue asks for every frame.
 TEST(LidarScene, CalibrationSphereOnTheGroundAmongWalls) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   int seen = 0, found = 0;
@@ -51,7 +51,7 @@ TEST(LidarScene, CalibrationSphereOnTheGroundAmongWalls) {
     }
   }
   ASSERT_GE(seen, 5);
-  EXPECT_GE(2 * found, seen) << found << " of " << seen << ";" << misses;
+  EXPECT_GE(10 * found, 8 * seen) << found << " of " << seen << ";" << misses;
 }
 
 // Seed 15: a 0.26 m ball resting on the ground, its top a few coarse voxels above it. The ground

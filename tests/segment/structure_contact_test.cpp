@@ -116,5 +116,46 @@ TEST(StructureContact, AFootprintEndsWhereThePlaneEnds) {
   EXPECT_FALSE(on_structure(footprints, Point(0.1, 0.1, 0.002)));   // above its band
 }
 
+// A ground that is not flat: two levels 6 cm apart (x < 0.1 and beyond), 1 mm of noise, removed
+// as one plane between them. With cell heights each level keeps a band of its own noise: a point
+// on either level is the plane's, one 1.5 cm above a level or at the plane between them is not.
+// The plane's one band must span both levels and takes the latter too.
+TEST(StructureContact, CellHeightsFollowAGroundThatIsNotFlat) {
+  NeighbourGraph g;
+  PointList points;
+  std::uint64_t state = 7;
+  const auto noise = [&] {  // uniform in +-1.7 mm: a deviation of 1 mm
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return (static_cast<double>(state >> 11) / 9007199254740992.0 - 0.5) * 0.0034;
+  };
+  for (int x = 0; x < 20; ++x) {
+    for (int y = 0; y < 20; ++y) {
+      const double level = x < 10 ? -0.03 : 0.03;
+      g.nodes.emplace_back(0.01 * x, 0.01 * y, level);
+      g.spacing.push_back(0.01);
+      for (int k = 0; k < 4; ++k) {
+        g.node_of_point.push_back(static_cast<std::uint32_t>(g.nodes.size() - 1));
+        points.emplace_back(0.01 * x + 0.0025 * k, 0.01 * y, level + noise());
+      }
+    }
+  }
+  std::vector<char> removed(g.size(), 1);
+  StructurePlane ground;
+  ground.plane.normal = Eigen::Vector3d::UnitZ();
+  ground.nodes = g.size();
+  const config::SegmentConfig cfg = config::PipelineConfig{}.segment;
+  const auto local = structure_footprints(points, g, removed, {ground}, cfg, true);
+  ASSERT_EQ(local.size(), 1u);
+  EXPECT_LT(local[0].band, 0.005);  // three deviations of the 1 mm noise, not the 6 cm step
+  EXPECT_TRUE(on_structure(local, Point(0.05, 0.1, -0.03)));
+  EXPECT_TRUE(on_structure(local, Point(0.15, 0.1, 0.031)));
+  EXPECT_FALSE(on_structure(local, Point(0.15, 0.1, 0.045)));  // 1.5 cm above the upper level
+  EXPECT_FALSE(on_structure(local, Point(0.05, 0.1, 0.0)));    // at the plane, 3 cm above the lower one
+  const auto flat = structure_footprints(points, g, removed, {ground}, cfg);
+  ASSERT_EQ(flat.size(), 1u);
+  EXPECT_GT(flat[0].band, 0.03);
+  EXPECT_TRUE(on_structure(flat, Point(0.05, 0.1, 0.0)));
+}
+
 }  // namespace
 }  // namespace cloudshape::segment
