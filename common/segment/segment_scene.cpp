@@ -96,23 +96,23 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
   out.structure = remove_structure(g, cfg, removed, pool, from_inside);
-  // The cells at an object's foot hold points of the plane it stands on or against. In an organized
-  // cloud only: in a sparse lidar frame a segment at a target's foot is often a strip of ground
-  // rings, which trimmed of its lowest points rises like a solid of its own.
+  // The cells at an object's foot hold points of the plane it stands on or against: an organized
+  // cloud's objects leave those points behind. Not an unorganized cloud's: in a sparse lidar frame
+  // a segment at a target's foot is often a strip of ground rings, which trimmed of its lowest
+  // points rises like a solid of its own (there the finer graph leaves them out, below).
   const std::vector<StructureFootprint> footprints =
       grid.organized() ? structure_footprints(points, g, removed, out.structure, cfg) : std::vector<StructureFootprint>{};
   // What the structure leaves of a wide, sparse scene, at its own (finer) resolution; input
   // indices through `kept` from then on.
   std::vector<std::uint32_t> kept;
   if (!grid.organized()) {
-    // A coarse voxel where a solid meets its ground or wall holds points of both, and is kept
-    // whole: in the finer graph the structure's points there are taken out again, each within the
-    // plane's noise of the height its points have around it (a lidar's real ground is neither
-    // level nor flat over tens of metres; a ball resting on it keeps all but its lowest point).
-    const std::vector<StructureFootprint> coarse_structure =
-        out.structure.empty() ? std::vector<StructureFootprint>{}
-                              : structure_footprints(points, g, removed, out.structure, cfg, true);
     if (std::optional<RemainderGraph> finer = finer_remainder_graph(points, g, removed, cfg, pool)) {
+      // A coarse voxel where a solid meets its ground or wall holds points of both, and is kept
+      // whole: the finer graph's nodes there within the plane's noise of the height its points
+      // have around them are the plane's (a lidar's real ground is neither level nor flat over
+      // tens of metres; a ball resting on it loses a cap a few centimetres high at its foot).
+      const std::vector<StructureFootprint> coarse_structure =
+          structure_footprints(points, g, removed, out.structure, cfg, true);
       g = std::move(finer->graph);
       kept = std::move(finer->points);
       removed.assign(g.size(), 0);

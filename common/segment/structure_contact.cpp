@@ -69,13 +69,25 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
       for (const auto& [key, h] : heights[k]) {
         const double height = detail::median(h);
         out[k].cells.try_emplace(key, height);
-        for (double x : h) distance[k].push_back(std::abs(x - height));
+        // The median is one of the cell's own heights: its zero deviation left out, or cells of a
+        // few points would halve the noise.
+        bool median_skipped = false;
+        for (double x : h) {
+          if (!median_skipped && x == height) {
+            median_skipped = true;
+            continue;
+          }
+          distance[k].push_back(std::abs(x - height));
+        }
       }
     }
   }
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
     f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(distance[k]), cfg.contact_min_band * f.cell);
+    if (f.cells.empty()) continue;
+    f.lowest = std::numeric_limits<double>::infinity();
+    f.highest = -std::numeric_limits<double>::infinity();
     for (const auto& [key, height] : f.cells) {
       f.lowest = std::min(f.lowest, height);
       f.highest = std::max(f.highest, height);
