@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "segment/detail/robust_spread.hpp"
 
@@ -58,27 +59,53 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
       out[plane_of[n]].cells.try_emplace(key_of(out[plane_of[n]], graph.nodes[n]), 0.0);
     }
   } else {
-    std::vector<std::unordered_map<std::uint64_t, std::vector<double>>> heights(planes.size());
+    // Each point's cell numbered as first met (one look-up a point), then the heights grouped by
+    // cell in one array (a counting sort): a median per cell without a vector per cell.
+    constexpr std::uint32_t kNoCell = 0xffffffffu;
+    std::vector<std::unordered_map<std::uint64_t, std::uint32_t>> cell_index(planes.size());
+    std::vector<std::pair<std::int32_t, std::uint64_t>> cell_ids;  // plane, in-plane key
+    std::vector<std::uint32_t> cell_of(points.size(), kNoCell), cell_begin;
+    std::vector<double> height_of(points.size(), 0.0);
+    // Only the plane's nodes beside a node it left are read: what the footprints are asked about
+    // lies in those (a solid's foot), and a floor's far reaches cost nothing.
+    std::vector<char> beside_kept(graph.size(), 0);
+    for (std::uint32_t n = 0; n < graph.size(); ++n) {
+      if (plane_of[n] < 0) continue;
+      graph.for_neighbours(n, [&](std::uint32_t m) { beside_kept[n] |= removed[m] ? 0 : 1; });
+    }
     for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
       const std::uint32_t n = graph.node_of_point[i];
-      if (n == kNoNode || plane_of[n] < 0 || !(out[plane_of[n]].cell > 0.0)) continue;
+      if (n == kNoNode || plane_of[n] < 0 || !beside_kept[n] || !(out[plane_of[n]].cell > 0.0)) continue;
       const StructureFootprint& f = out[plane_of[n]];
-      heights[plane_of[n]][key_of(f, points[i])].push_back(f.plane.signed_distance(points[i]));
+      const auto [slot, added] =
+          cell_index[plane_of[n]].try_emplace(key_of(f, points[i]), static_cast<std::uint32_t>(cell_ids.size()));
+      if (added) {
+        cell_ids.emplace_back(plane_of[n], slot->first);
+        cell_begin.push_back(0);
+      }
+      cell_of[i] = slot->second;
+      ++cell_begin[slot->second];
+      height_of[i] = f.plane.signed_distance(points[i]);
     }
-    for (std::size_t k = 0; k < planes.size(); ++k) {
-      for (const auto& [key, h] : heights[k]) {
-        const double height = detail::median(h);
-        out[k].cells.try_emplace(key, height);
-        // The median is one of the cell's own heights: its zero deviation left out, or cells of a
-        // few points would halve the noise.
-        bool median_skipped = false;
-        for (double x : h) {
-          if (!median_skipped && x == height) {
-            median_skipped = true;
-            continue;
-          }
-          distance[k].push_back(std::abs(x - height));
-        }
+    std::uint32_t total = 0;
+    for (std::uint32_t& c : cell_begin) total += std::exchange(c, total);
+    cell_begin.push_back(total);
+    std::vector<double> heights(total);
+    std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
+    for (std::size_t i = 0; i < cell_of.size(); ++i) {
+      if (cell_of[i] != kNoCell) heights[next[cell_of[i]]++] = height_of[i];
+    }
+    for (std::size_t c = 0; c < cell_ids.size(); ++c) {
+      const auto first = heights.begin() + cell_begin[c], last = heights.begin() + cell_begin[c + 1];
+      const auto middle = first + (last - first) / 2;  // the upper middle, as detail::median
+      std::nth_element(first, middle, last);
+      const double height = *middle;
+      const auto [k, key] = cell_ids[c];
+      out[k].cells.try_emplace(key, height);
+      // The median is one of the cell's own heights: its zero deviation left out, or cells of a
+      // few points would halve the noise.
+      for (auto h = first; h != last; ++h) {
+        if (h != middle) distance[k].push_back(std::abs(*h - height));
       }
     }
   }

@@ -26,9 +26,11 @@ struct StructureFootprint {
 
 // The footprints of `planes`, which removed the nodes set in `removed` (each node goes to the
 // plane nearest to it); the graph's node_of_point[i] is the node of points[i]. The cells are
-// those its nodes lie in, at height 0: a flat table or wall. With `cell_heights`, those its points
-// lie in, each at the median height of its points there: a ground or wall that is not flat (a
-// lidar's real ground, tilted or rolling, over a wide scene) keeps a band as narrow as its noise.
+// those its nodes lie in, at height 0: a flat table or wall. With `cell_heights`, those the points
+// of its nodes beside a node it left (the graph's neighbours; what stands on it) lie in, each at
+// the median height of those points there: a ground or wall that is not flat (a lidar's real
+// ground, tilted or rolling, over a wide scene) keeps a band as narrow as its noise, and its far
+// reaches cost nothing.
 std::vector<StructureFootprint> structure_footprints(const PointList& points, const NeighbourGraph& graph,
                                                      const std::vector<char>& removed,
                                                      const std::vector<StructurePlane>& planes,

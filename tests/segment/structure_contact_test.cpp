@@ -118,41 +118,57 @@ TEST(StructureContact, AFootprintEndsWhereThePlaneEnds) {
 }
 
 // A ground that is not flat: two levels 6 cm apart (x < 0.1 and beyond), normal noise of 1 mm,
-// removed as one plane between them, 4 points a node. With cell heights the band is three noise
+// 4 points a node, removed as one plane between them but for a strip of nodes across both levels
+// (y = 0.1: what stands there), the nodes 8-connected. With cell heights the band is three noise
 // deviations about each cell's own height, a little more for the noise of that height (a median of
-// a few points): 3-4 mm (3.5 measured; with the median's own zero deviation counted it would be
-// about 2). A point on either level is the plane's, one 1.5 cm above a level or at the plane
-// between them is not. The plane's one band must span both levels and takes the latter too.
+// 4 points), from the 160 points beside the strip: 3-4.5 mm (3.85 measured; with the median's own
+// zero deviation counted it would be about 2). By the strip, a point on either level is the plane's, one 1.5 cm above a level or at
+// the plane between them is not; far from it (y = 0.18) nothing is, its cells unread. The plane's
+// one band must span both levels and takes the point between them too.
 TEST(StructureContact, CellHeightsFollowAGroundThatIsNotFlat) {
   NeighbourGraph g;
   PointList points;
   std::mt19937_64 rng(7);
-  std::normal_distribution<double> normal(0.0, 0.001);
-  const auto noise = [&] { return normal(rng); };
-  for (int x = 0; x < 20; ++x) {
-    for (int y = 0; y < 20; ++y) {
+  std::normal_distribution<double> noise(0.0, 0.001);
+  constexpr int kSide = 20;
+  for (int x = 0; x < kSide; ++x) {
+    for (int y = 0; y < kSide; ++y) {
       const double level = x < 10 ? -0.03 : 0.03;
       g.nodes.emplace_back(0.01 * x, 0.01 * y, level);
       g.spacing.push_back(0.01);
       for (int k = 0; k < 4; ++k) {
         g.node_of_point.push_back(static_cast<std::uint32_t>(g.nodes.size() - 1));
-        points.emplace_back(0.01 * x + 0.0025 * k, 0.01 * y, level + noise());
+        points.emplace_back(0.01 * x + 0.0025 * k, 0.01 * y, level + noise(rng));
       }
     }
   }
+  g.adjacency_begin.push_back(0);
+  for (int x = 0; x < kSide; ++x) {
+    for (int y = 0; y < kSide; ++y) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        for (int dy = -1; dy <= 1; ++dy) {
+          const int nx = x + dx, ny = y + dy;
+          if ((dx != 0 || dy != 0) && nx >= 0 && nx < kSide && ny >= 0 && ny < kSide) g.adjacency.push_back(nx * kSide + ny);
+        }
+      }
+      g.adjacency_begin.push_back(static_cast<std::uint32_t>(g.adjacency.size()));
+    }
+  }
   std::vector<char> removed(g.size(), 1);
+  for (int x = 0; x < kSide; ++x) removed[x * kSide + 10] = 0;
   StructurePlane ground;
   ground.plane.normal = Eigen::Vector3d::UnitZ();
-  ground.nodes = g.size();
+  ground.nodes = g.size() - kSide;
   const config::SegmentConfig cfg = config::PipelineConfig{}.segment;
   const auto local = structure_footprints(points, g, removed, {ground}, cfg, true);
   ASSERT_EQ(local.size(), 1u);
   EXPECT_GT(local[0].band, 0.003);  // three deviations of the 1 mm noise, not the 6 cm step
-  EXPECT_LT(local[0].band, 0.004);
+  EXPECT_LT(local[0].band, 0.0045);
   EXPECT_TRUE(on_structure(local, Point(0.05, 0.1, -0.03)));
   EXPECT_TRUE(on_structure(local, Point(0.15, 0.1, 0.031)));
   EXPECT_FALSE(on_structure(local, Point(0.15, 0.1, 0.045)));  // 1.5 cm above the upper level
   EXPECT_FALSE(on_structure(local, Point(0.05, 0.1, 0.0)));    // at the plane, 3 cm above the lower one
+  EXPECT_FALSE(on_structure(local, Point(0.05, 0.18, -0.03))); // on the ground, far from the strip
   const auto flat = structure_footprints(points, g, removed, {ground}, cfg);
   ASSERT_EQ(flat.size(), 1u);
   EXPECT_GT(flat[0].band, 0.03);
