@@ -14,6 +14,82 @@ std::uint64_t cell_key(std::int64_t x, std::int64_t y) {
   return (static_cast<std::uint64_t>(x) << 32) ^ (static_cast<std::uint64_t>(y) & 0xFFFFFFFFull);
 }
 
+// The in-plane cell of `p` in footprint `f`.
+std::uint64_t key_of(const StructureFootprint& f, const Point& p) {
+  return cell_key(static_cast<std::int64_t>(std::floor(p.dot(f.u) / f.cell)),
+                  static_cast<std::int64_t>(std::floor(p.dot(f.v) / f.cell)));
+}
+
+// A flat plane: the cells its nodes lie in, at height 0, and its points' distances from it.
+void add_node_cells(const PointList& points, const NeighbourGraph& graph, const std::vector<std::int32_t>& plane_of,
+                    std::vector<StructureFootprint>& out, std::vector<std::vector<double>>& distance) {
+  for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
+    const std::uint32_t n = graph.node_of_point[i];
+    if (n == kNoNode || plane_of[n] < 0) continue;
+    distance[plane_of[n]].push_back(std::abs(out[plane_of[n]].plane.signed_distance(points[i])));
+  }
+  for (std::uint32_t n = 0; n < graph.size(); ++n) {
+    if (plane_of[n] < 0 || !(out[plane_of[n]].cell > 0.0)) continue;
+    out[plane_of[n]].cells.try_emplace(key_of(out[plane_of[n]], graph.nodes[n]), 0.0);
+  }
+}
+
+// A plane that need not be flat: the cells its points beside what it left lie in, each at their
+// median height over the plane, and the points' distances from their cell's height.
+void add_cell_heights(const PointList& points, const NeighbourGraph& graph, const std::vector<char>& removed,
+                      const std::vector<std::int32_t>& plane_of, std::vector<StructureFootprint>& out,
+                      std::vector<std::vector<double>>& distance) {
+  // Only the plane's nodes beside a node it left are read: what the footprints are asked about
+  // lies in those (a solid's foot), and a floor's far reaches cost nothing.
+  std::vector<char> beside_kept(graph.size(), 0);
+  for (std::uint32_t n = 0; n < graph.size(); ++n) {
+    if (plane_of[n] < 0) continue;
+    graph.for_neighbours(n, [&](std::uint32_t m) { beside_kept[n] |= removed[m] ? 0 : 1; });
+  }
+  // Each point's cell numbered as first met (one look-up a point), then the heights grouped by
+  // cell in one array (a counting sort): a median per cell without a vector per cell.
+  constexpr std::uint32_t kNoCell = 0xffffffffu;
+  std::vector<std::unordered_map<std::uint64_t, std::uint32_t>> cell_index(out.size());
+  std::vector<std::pair<std::int32_t, std::uint64_t>> cell_ids;  // plane, in-plane key
+  std::vector<std::uint32_t> cell_of(points.size(), kNoCell), cell_begin;
+  std::vector<double> height_of(points.size(), 0.0);
+  for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
+    const std::uint32_t n = graph.node_of_point[i];
+    if (n == kNoNode || plane_of[n] < 0 || !beside_kept[n] || !(out[plane_of[n]].cell > 0.0)) continue;
+    const StructureFootprint& f = out[plane_of[n]];
+    const auto [slot, added] =
+        cell_index[plane_of[n]].try_emplace(key_of(f, points[i]), static_cast<std::uint32_t>(cell_ids.size()));
+    if (added) {
+      cell_ids.emplace_back(plane_of[n], slot->first);
+      cell_begin.push_back(0);
+    }
+    cell_of[i] = slot->second;
+    ++cell_begin[slot->second];
+    height_of[i] = f.plane.signed_distance(points[i]);
+  }
+  std::uint32_t total = 0;
+  for (std::uint32_t& c : cell_begin) total += std::exchange(c, total);
+  cell_begin.push_back(total);
+  std::vector<double> heights(total);
+  std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
+  for (std::size_t i = 0; i < cell_of.size(); ++i) {
+    if (cell_of[i] != kNoCell) heights[next[cell_of[i]]++] = height_of[i];
+  }
+  for (std::size_t c = 0; c < cell_ids.size(); ++c) {
+    const auto first = heights.begin() + cell_begin[c], last = heights.begin() + cell_begin[c + 1];
+    const auto middle = first + (last - first) / 2;  // the upper middle, as detail::median
+    std::nth_element(first, middle, last);
+    const double height = *middle;
+    const auto [k, key] = cell_ids[c];
+    out[k].cells.try_emplace(key, height);
+    // The median is one of the cell's own heights: its zero deviation left out, or cells of a
+    // few points would halve the noise.
+    for (auto h = first; h != last; ++h) {
+      if (h != middle) distance[k].push_back(std::abs(*h - height));
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<StructureFootprint> structure_footprints(const PointList& points, const NeighbourGraph& graph,
@@ -40,74 +116,14 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
     f.cell = detail::median(spacing[k]);
     geometry::plane_basis(f.plane.normal, f.u, f.v);
   }
-  const auto key_of = [](const StructureFootprint& f, const Point& p) {
-    return cell_key(static_cast<std::int64_t>(std::floor(p.dot(f.u) / f.cell)),
-                    static_cast<std::int64_t>(std::floor(p.dot(f.v) / f.cell)));
-  };
   // The noise of the plane's own points: their median absolute distance (from the plane, or from
   // their cell's height), scaled to a normal deviation (1.4826); robust to the cells at an
   // object's foot that hold some of its points.
   std::vector<std::vector<double>> distance(planes.size());
-  if (!cell_heights) {
-    for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
-      const std::uint32_t n = graph.node_of_point[i];
-      if (n == kNoNode || plane_of[n] < 0) continue;
-      distance[plane_of[n]].push_back(std::abs(planes[plane_of[n]].plane.signed_distance(points[i])));
-    }
-    for (std::uint32_t n = 0; n < graph.size(); ++n) {
-      if (plane_of[n] < 0 || !(out[plane_of[n]].cell > 0.0)) continue;
-      out[plane_of[n]].cells.try_emplace(key_of(out[plane_of[n]], graph.nodes[n]), 0.0);
-    }
+  if (cell_heights) {
+    add_cell_heights(points, graph, removed, plane_of, out, distance);
   } else {
-    // Each point's cell numbered as first met (one look-up a point), then the heights grouped by
-    // cell in one array (a counting sort): a median per cell without a vector per cell.
-    constexpr std::uint32_t kNoCell = 0xffffffffu;
-    std::vector<std::unordered_map<std::uint64_t, std::uint32_t>> cell_index(planes.size());
-    std::vector<std::pair<std::int32_t, std::uint64_t>> cell_ids;  // plane, in-plane key
-    std::vector<std::uint32_t> cell_of(points.size(), kNoCell), cell_begin;
-    std::vector<double> height_of(points.size(), 0.0);
-    // Only the plane's nodes beside a node it left are read: what the footprints are asked about
-    // lies in those (a solid's foot), and a floor's far reaches cost nothing.
-    std::vector<char> beside_kept(graph.size(), 0);
-    for (std::uint32_t n = 0; n < graph.size(); ++n) {
-      if (plane_of[n] < 0) continue;
-      graph.for_neighbours(n, [&](std::uint32_t m) { beside_kept[n] |= removed[m] ? 0 : 1; });
-    }
-    for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
-      const std::uint32_t n = graph.node_of_point[i];
-      if (n == kNoNode || plane_of[n] < 0 || !beside_kept[n] || !(out[plane_of[n]].cell > 0.0)) continue;
-      const StructureFootprint& f = out[plane_of[n]];
-      const auto [slot, added] =
-          cell_index[plane_of[n]].try_emplace(key_of(f, points[i]), static_cast<std::uint32_t>(cell_ids.size()));
-      if (added) {
-        cell_ids.emplace_back(plane_of[n], slot->first);
-        cell_begin.push_back(0);
-      }
-      cell_of[i] = slot->second;
-      ++cell_begin[slot->second];
-      height_of[i] = f.plane.signed_distance(points[i]);
-    }
-    std::uint32_t total = 0;
-    for (std::uint32_t& c : cell_begin) total += std::exchange(c, total);
-    cell_begin.push_back(total);
-    std::vector<double> heights(total);
-    std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
-    for (std::size_t i = 0; i < cell_of.size(); ++i) {
-      if (cell_of[i] != kNoCell) heights[next[cell_of[i]]++] = height_of[i];
-    }
-    for (std::size_t c = 0; c < cell_ids.size(); ++c) {
-      const auto first = heights.begin() + cell_begin[c], last = heights.begin() + cell_begin[c + 1];
-      const auto middle = first + (last - first) / 2;  // the upper middle, as detail::median
-      std::nth_element(first, middle, last);
-      const double height = *middle;
-      const auto [k, key] = cell_ids[c];
-      out[k].cells.try_emplace(key, height);
-      // The median is one of the cell's own heights: its zero deviation left out, or cells of a
-      // few points would halve the noise.
-      for (auto h = first; h != last; ++h) {
-        if (h != middle) distance[k].push_back(std::abs(*h - height));
-      }
-    }
+    add_node_cells(points, graph, plane_of, out, distance);
   }
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
