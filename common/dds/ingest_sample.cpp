@@ -88,7 +88,10 @@ std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, 
     o.header().timings().preprocess_ms(ms);
     o.cloud(to_msg(count == 0 ? PointList{} : objects[i].points, clouds.scene, raw.points.size()));
     // An object found among a scene's structure was gridded at its own resolution.
-    if (count != 0) o.cloud().resolution(objects[i].resolution);
+    if (count != 0) {
+      o.cloud().resolution(objects[i].resolution);
+      o.cloud().scan_lines(objects[i].scan_lines);
+    }
     set_viewpoint(o.cloud(), clouds.viewpoint);
     out.push_back(std::move(o));
   }

@@ -17,6 +17,7 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
   if (scene.objects.empty() && scene.structure.empty() && !raw.empty()) {
     scene.objects.emplace_back(raw.size());
     std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);
+    scene.scan_lines.assign(1, 0);
   }
   // Each object preprocessed in its own slot; the slots joined in object order.
   std::vector<PreprocessedCloud> done(scene.objects.size());
@@ -35,7 +36,8 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     }
     out.scene.outliers_removed += p.outliers_removed;
     out.scene.points.insert(out.scene.points.end(), p.points.begin(), p.points.end());
-    out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k]), std::move(p.tree)});
+    out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k]), std::move(p.tree),
+                           k < scene.scan_lines.size() ? scene.scan_lines[k] : 0u});
   }
   return out;
 }

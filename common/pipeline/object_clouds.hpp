@@ -21,6 +21,7 @@ struct ObjectCloud {
   double resolution = 0.0;
   std::vector<std::uint32_t> raw_indices;  // into the raw cloud
   std::shared_ptr<const geometry::KdTree> tree;  // over `points`, for every stage's neighbours
+  std::uint32_t scan_lines = 0;  // in a lidar frame, the scan lines it lies on; 0 elsewhere
 };
 
 struct ObjectClouds {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <unordered_set>
 
 #include "geometry/convex_hull.hpp"
@@ -15,6 +16,10 @@
 
 namespace cloudshape::pipeline {
 namespace {
+
+// Scan lines an object must lie on for any solid but a sphere: two lines are two curves, which fix
+// a sphere (two circles of it) but leave any other solid's extent between and beyond them open.
+constexpr std::uint32_t kScanLinesBeyondASphere = 3;
 
 struct Verification {
   double explained = 0.0;  // share of points within the tolerance of the surface
@@ -131,13 +136,25 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
-                          const std::optional<Point>& viewpoint, std::size_t objects_in_cloud) {
+                          const std::optional<Point>& viewpoint, std::size_t objects_in_cloud,
+                          std::uint32_t scan_lines) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
   for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
   if (classification.candidates.empty()) {
     out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
+    out.extent = extent_of(cloud, {}, cfg);
+    return out;
+  }
+  // Seen on two scan lines (fewer leave no object), only a sphere is determined.
+  const bool sphere_only = scan_lines > 0 && scan_lines < kScanLinesBeyondASphere;
+  std::vector<Shape> candidates;
+  for (Shape shape : classification.candidates) {
+    if (!sphere_only || shape == Shape::sphere) candidates.push_back(shape);
+  }
+  if (candidates.empty()) {
+    out.reason = "seen on " + std::to_string(scan_lines) + " scan lines: only a sphere is determined, and none fits";
     out.extent = extent_of(cloud, {}, cfg);
     return out;
   }
@@ -155,7 +172,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
            flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
                            cfg.flat_face_min_fill, cfg.side_face_min_share, fills) <= cfg.curved_side_flat_share;
   };
-  for (Shape shape : classification.candidates) {
+  for (Shape shape : candidates) {
     auto solid = fit_solid(shape, input);
     if (!admissible(solid)) continue;
     const Verification v =
@@ -195,7 +212,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // the answer only where no cylinder explains the points: the second chance is tried against it
   // too, and a cylinder explaining nearly as many (cfg.preferred_margin) stands.
   const bool frustum = chosen && chosen->first.shape == Shape::frustum;
-  if (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum) {
+  if (!sphere_only && (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum)) {
     if (auto second = fit_cylinder_from_side_normals(input); admissible(second)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
@@ -210,7 +227,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   // The chosen round solid seen from its hollow side is the inside of a container, which is what
   // the points show (container.hpp).
-  if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
+  if (chosen && !sphere_only && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     auto container = container_of_hollow(cloud, chosen->first, cfg);
     if (container && detail::plausible(*container, diameter, cfg.max_size_ratio)) {
       const Verification v = verify(cloud, *container, tolerance, static_cast<std::size_t>(cfg.verify_samples));

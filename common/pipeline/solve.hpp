@@ -21,10 +21,14 @@ namespace cloudshape::pipeline {
 // container's inside (container.hpp). `objects_in_cloud`: how many objects the cloud this one
 // came from held; only an object alone, with no viewpoint, may show a notch on its cap's border
 // alone (solid_prism.cpp: nothing beside it could have hidden that stretch of the cap).
+// `scan_lines`: the lidar scan lines the object lies on (0: not a lidar frame). Two lines are two
+// curves across the object: they fix a sphere (two circles of it) and no other solid, whose
+// extent between and beyond them they leave open; on two, only a sphere is tried.
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,
                           const geometry::KdTree* tree = nullptr,
-                          const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1);
+                          const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1,
+                          std::uint32_t scan_lines = 0);
 
 }  // namespace cloudshape::pipeline

@@ -16,6 +16,8 @@ namespace cloudshape::segment {
 struct SceneSegmentation {
   // Per object, indices into the input points, largest object first.
   std::vector<std::vector<std::uint32_t>> objects;
+  // Per object, in a lidar frame, the scan lines (beams) its points lie on; 0 elsewhere.
+  std::vector<std::uint32_t> scan_lines;
   std::vector<StructurePlane> structure;  // tables, floors, walls removed
   std::optional<Point> viewpoint;         // the sensor's position, when the layout tells it
 };

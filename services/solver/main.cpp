@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::ObjectResult object = cs::pipeline::solve_object(
               points, seg, keypoints, cls, in.cloud().resolution(), cfg.solve, nullptr,
-              cs::dds::viewpoint_of(in.cloud()), in.header().object_count());
+              cs::dds::viewpoint_of(in.cloud()), in.header().object_count(), in.cloud().scan_lines());
           cs::msg::ShapeResult out = result_header(in);
           out.header().timings().solve_ms(cs::service::elapsed_ms(start));
           out.objects().push_back(cs::dds::to_msg(object));

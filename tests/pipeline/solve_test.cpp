@@ -1,6 +1,8 @@
 // Stage 5: each solid's dimensions and pose against the analytic truth (1% / 1 degree).
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "pipeline/solve.hpp"
 #include "stage_fixtures.hpp"
 
@@ -95,6 +97,25 @@ TEST(Solve, AxesAreOrthonormal) {
     EXPECT_LT((r.axes * r.axes.transpose() - Eigen::Matrix3d::Identity()).norm(), 1e-9)
         << synth::to_string(kind);
   }
+}
+
+// A lidar object on two scan lines: only a sphere is determined (two circles of it), so a box's
+// points give unknown with the reason, while a sphere's are still a sphere; on three lines the
+// box is a box again.
+TEST(Solve, OnTwoScanLinesOnlyASphereIsNamed) {
+  const auto box = stage(synth::ShapeKind::box, {3.0, 2.0, 1.0});
+  const auto solve_on = [](const testing::StagedCloud& s, std::uint32_t lines) {
+    return solve_object(s.pre.points, s.planes, s.keypoints, s.classification, s.pre.resolution, config::SolveConfig{},
+                        nullptr, std::nullopt, 1, lines);
+  };
+  const ObjectResult two = solve_on(box, 2);
+  EXPECT_EQ(two.shape, "unknown");
+  EXPECT_NE(two.reason.find("2 scan lines"), std::string::npos) << two.reason;
+  EXPECT_EQ(solve_on(box, 3).shape, "box");
+  const auto sphere = stage(synth::ShapeKind::sphere, {1.5});
+  const ObjectResult ball = solve_on(sphere, 2);
+  ASSERT_EQ(ball.shape, "sphere");
+  expect_dimensions(ball, sphere.spec);
 }
 
 }  // namespace
