@@ -86,6 +86,7 @@ TEST(IngestRosCloud, SameFilteredCloudsAsARawCloudOfTheSamePoints) {
     for (std::size_t i = 0; i < a.size(); ++i) {
       EXPECT_EQ(a[i].cloud().xyz(), b[i].cloud().xyz());
       EXPECT_EQ(a[i].cloud().resolution(), b[i].cloud().resolution());
+      EXPECT_EQ(a[i].cloud().scan_lines(), b[i].cloud().scan_lines());
       EXPECT_EQ(a[i].header().sensor().frame_id(), kHeader.frame_id);
       EXPECT_EQ(a[i].header().object_count(), b[i].header().object_count());
     }

@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -16,6 +17,7 @@
 #include "dds/convert.hpp"
 #include "dds/ingest_sample.hpp"
 #include "dds/topics.hpp"
+#include "lidar_frames.hpp"
 #include "pipeline/object_clouds.hpp"
 #include "synth/random_solid.hpp"
 #include "synth/sample_solid.hpp"
@@ -87,6 +89,25 @@ TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) 
   EXPECT_EQ(out[0].cloud().points_in(), finite.size());
   EXPECT_EQ(from_xyz(out[0].cloud().xyz()), objects[0].points);
   EXPECT_EQ(out[0].cloud().resolution(), objects[0].resolution);
+}
+
+// A lidar frame's objects carry the scan lines they lie on, as recognize_cloud's segmentation
+// counts them (the solver names only a sphere on two): the same counts, and at least one object on
+// two or more lines (the ball).
+TEST(IngestSample, ALidarFramesObjectsCarryTheirScanLines) {
+  const PointList frame = testing::lidar_frame(1, 32);
+  std::vector<double> xyz;
+  for (const Point& p : frame) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
+  const config::PipelineConfig cfg;
+  const pipeline::ObjectClouds expected = pipeline::object_clouds(frame, GridLayout{}, cfg.preprocess, cfg.segment);
+  const auto out = ingest_raw_cloud(raw(xyz), cfg);
+  ASSERT_EQ(out.size(), expected.objects.size());
+  std::uint32_t most = 0;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    EXPECT_EQ(out[i].cloud().scan_lines(), expected.objects[i].scan_lines) << i;
+    most = std::max(most, out[i].cloud().scan_lines());
+  }
+  EXPECT_GE(most, 2u);
 }
 
 TEST(IngestSample, AllNonFiniteIsRefused) {
