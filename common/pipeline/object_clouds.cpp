@@ -37,7 +37,7 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     out.scene.outliers_removed += p.outliers_removed;
     out.scene.points.insert(out.scene.points.end(), p.points.begin(), p.points.end());
     out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k]), std::move(p.tree),
-                           k < scene.scan_lines.size() ? scene.scan_lines[k] : 0u});
+                           scene.scan_lines[k]});
   }
   return out;
 }

@@ -150,14 +150,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // On two scan lines only a sphere is determined; one line (segment.scan_object_min_beams
   // below 2) fixes no solid at all.
   const bool sphere_only = scan_lines > 0 && scan_lines < kScanLinesBeyondASphere;
-  const std::string lines = "seen on " + std::to_string(scan_lines) + " scan line" + (scan_lines == 1 ? "" : "s");
+  const auto lines = [scan_lines] {
+    return "seen on " + std::to_string(scan_lines) + " scan line" + (scan_lines == 1 ? "" : "s");
+  };
   std::vector<Shape> candidates;
   for (Shape shape : classification.candidates) {
     if (!sphere_only || (shape == Shape::sphere && scan_lines >= 2)) candidates.push_back(shape);
   }
   if (candidates.empty()) {
-    out.reason = scan_lines == 1 ? lines + ": no solid is determined"
-                                 : lines + ": only a sphere is determined, and the points were not classed as one";
+    out.reason = scan_lines == 1 ? lines() + ": no solid is determined"
+                                 : lines() + ": only a sphere is determined, and the points were not classed as one";
     out.extent = extent_of(cloud, {}, cfg);
     return out;
   }
@@ -232,7 +234,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // the points show (container.hpp); on two scan lines neither is determined.
   if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     if (sphere_only) {
-      out.reason = lines + ": a hollow side, and no container is determined";
+      out.reason = lines() + ": a hollow side, and no container is determined";
       out.extent = extent_of(cloud, {}, cfg);
       return out;
     }
@@ -250,7 +252,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                     shape_name(chosen->first.shape).c_str(), 100.0 * chosen->second.explained);
     else
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
-    out.reason = sphere_only ? lines + ", only a sphere tried: " + buf : std::string(buf);
+    out.reason = sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf);
     out.extent = extent_of(cloud, {}, cfg);
     return out;
   }

@@ -197,19 +197,20 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
   // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
   // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is
   // a leftover of that plane.
-  out.scan_lines.assign(out.objects.size(), 0);
-  if (!grid.organized() && out.viewpoint && !out.objects.empty()) {
-    const std::vector<std::int32_t> beam_of = scan_beam_of_points(points, cfg);
-    const auto min_beams = static_cast<std::size_t>(cfg.scan_object_min_beams);
-    out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(),
-                                     [&](const auto& o) {
-                                       return beams_spanned(beam_of, o) < min_beams ||
-                                              in_structure_share(points, o, out.structure, cfg) >= cfg.scan_leftover_share;
-                                     }),
-                      out.objects.end());
-    out.scan_lines.clear();
-    for (const auto& o : out.objects) out.scan_lines.push_back(static_cast<std::uint32_t>(beams_spanned(beam_of, o)));
+  if (grid.organized() || !out.viewpoint) {
+    out.scan_lines.assign(out.objects.size(), 0);
+    return out;
   }
+  const std::vector<std::int32_t> beam_of = scan_beam_of_points(points, cfg);
+  const auto min_beams = static_cast<std::size_t>(cfg.scan_object_min_beams);
+  std::vector<std::vector<std::uint32_t>> kept;
+  for (auto& o : out.objects) {
+    const std::size_t beams = beams_spanned(beam_of, o);
+    if (beams < min_beams || in_structure_share(points, o, out.structure, cfg) >= cfg.scan_leftover_share) continue;
+    kept.push_back(std::move(o));
+    out.scan_lines.push_back(static_cast<std::uint32_t>(beams));
+  }
+  out.objects = std::move(kept);
   return out;
 }
 
