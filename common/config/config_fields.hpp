@@ -36,6 +36,7 @@ template <class F>
 void visit_fields(SegmentConfig& c, F&& f) {
   f("target_nodes", c.target_nodes);
   f("voxel_target_nodes", c.voxel_target_nodes);
+  f("isolated_target_nodes", c.isolated_target_nodes);
   f("depth_jump", c.depth_jump);
   f("normal_radius", c.normal_radius);
   f("crease_degrees", c.crease_degrees);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "config/stage_configs.hpp"
@@ -58,6 +59,11 @@ double finest_voxel(const PointList& points, parallel::ThreadPool* pool = nullpt
 // voxels' excess over cfg.voxel_target_nodes (a surface fills voxels with the inverse square of
 // the edge).
 double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr);
+
+// budget_voxel, and the same for `fewer` voxel target nodes instead of cfg.voxel_target_nodes
+// (never finer), from one pass over the points: {budget_voxel, coarser}.
+std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
+                                        parallel::ThreadPool* pool = nullptr);
 
 // Any cloud: voxels of budget_voxel's edge, grown by a quarter at a time while more than 1.3
 // cfg.target_nodes are occupied; a voxel's node is its centroid, 26-neighbour voxels are

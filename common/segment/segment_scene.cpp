@@ -60,8 +60,15 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
 // (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
+// An unorganized cloud without a lidar's viewpoint (`may_be_isolated`) is gridded to
+// cfg.isolated_target_nodes first when that is coarser than the scene's budget, and segmented
+// there when that graph holds no plane reaching cfg.structure_reach times beyond what stands on it
+// and the segmentation gives one object of nearly all the points (isolated_whole): a lone solid
+// needs no finer graph. Otherwise (a support in view, several objects, a part left out) it is a
+// scene, segmented again at cfg.voxel_target_nodes: what it would have been without the trial.
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan);
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
+                               bool may_be_isolated);
 
 // The objects in the points `indices` select, segmented again alone, when they would grid finer
 // alone than at `spacing` (finer_on_its_own); none otherwise. Only a strict part of `points`: all
@@ -74,28 +81,48 @@ std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
   own.reserve(indices.size());
   for (std::uint32_t i : indices) own.push_back(points[i]);
   if (!finer_on_its_own(own, spacing, cfg, pool)) return std::nullopt;
-  std::vector<std::vector<std::uint32_t>> parts = segment_part(own, GridLayout{}, cfg, pool, scan).objects;
+  std::vector<std::vector<std::uint32_t>> parts = segment_part(own, GridLayout{}, cfg, pool, scan, false).objects;
   for (auto& part : parts) {
     for (std::uint32_t& i : part) i = indices[i];
   }
   return parts;
 }
 
+// One object holding all the points but fewer than cfg.min_object_share of them: at the scene's
+// finer budget a part that small could be no object of its own either.
+bool isolated_whole(const SceneSegmentation& s, std::size_t points, const config::SegmentConfig& cfg) {
+  return s.objects.size() == 1 &&
+         static_cast<double>(points - s.objects.front().size()) <= cfg.min_object_share * static_cast<double>(points);
+}
+
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan) {
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
+                               bool may_be_isolated) {
   SceneSegmentation out;
-  NeighbourGraph g = grid.organized() && grid.pixel.size() == points.size()
-                         ? build_organized_graph(points, grid, cfg, pool)
-                         : build_voxel_graph(points, cfg, pool);
-  if (g.size() == 0) return out;
-  if (!grid.organized()) {
-    if (!scan) scan = scan_origin(points, cfg, pool);
-    orient_to_viewpoint(g, *scan);
+  if (!grid.organized() && !scan) scan = scan_origin(points, cfg, pool);
+  NeighbourGraph g;
+  bool isolated = false;  // on the trial's coarser graph, whose structure search removed nothing
+  if (grid.organized() && grid.pixel.size() == points.size()) {
+    g = build_organized_graph(points, grid, cfg, pool);
+  } else {
+    may_be_isolated = may_be_isolated && !grid.organized() && !scan->has_value() && cfg.isolated_target_nodes > 0;
+    const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool);
+    if (may_be_isolated && coarse > scene) {
+      g = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool);
+      std::vector<char> none(g.size(), 0);
+      std::size_t reaching = 0;
+      remove_structure(g, cfg, none, pool, false, &reaching);
+      isolated = reaching == 0;
+    }
+    if (!isolated) g = build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool);
   }
+  if (g.size() == 0) return out;
+  out.graph_nodes = g.size();
+  if (!grid.organized()) orient_to_viewpoint(g, *scan);
   out.viewpoint = g.viewpoint;
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
-  out.structure = remove_structure(g, cfg, removed, pool, from_inside);
+  if (!isolated) out.structure = remove_structure(g, cfg, removed, pool, from_inside);
   // The cells at an object's foot hold points of the plane it stands on or against: an organized
   // cloud's objects leave those points behind. Not an unorganized cloud's: in a sparse lidar frame
   // a segment at a target's foot is often a strip of ground rings, which trimmed of its lowest
@@ -186,6 +213,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
                     out.objects.end());
   std::stable_sort(out.objects.begin(), out.objects.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
+  if (isolated && !isolated_whole(out, points.size(), cfg)) return segment_part(points, grid, cfg, pool, scan, false);
   return out;
 }
 
@@ -193,7 +221,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
-  SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt);
+  SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt, true);
   // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
   // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is
   // a leftover of that plane.

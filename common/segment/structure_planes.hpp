@@ -33,8 +33,10 @@ struct StructurePlane {
 // too, and all its nodes in the band go with it (a wall's parts between windows too); a part apart
 // from the plane's connected one only within the noise the connected one shows (a ball on the
 // ground rises above it).
+// `reaching`, if given, counts the planes tried that reach cfg.structure_reach times beyond what
+// stands on them, structure or not: none means the graph holds no candidate support at all.
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
                                              std::vector<char>& removed, parallel::ThreadPool* pool = nullptr,
-                                             bool from_inside = false);
+                                             bool from_inside = false, std::size_t* reaching = nullptr);
 
 }  // namespace cloudshape::segment

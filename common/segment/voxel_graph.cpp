@@ -54,8 +54,10 @@ double finest_in(const PointList& points, const geometry::Bounds& box, parallel:
                   (box.max - box.min).maxCoeff() / kMaxCellsPerAxis);
 }
 
-double budget_in(const PointList& points, const geometry::Bounds& box, const config::SegmentConfig& cfg,
-                 parallel::ThreadPool* pool) {
+// budget_in for cfg.voxel_target_nodes and for `fewer` (a coarser budget) at once.
+std::pair<double, double> budgets_in(const PointList& points, const geometry::Bounds& box,
+                                     const config::SegmentConfig& cfg, std::int64_t fewer,
+                                     parallel::ThreadPool* pool) {
   // Never finer than the scene-wide voxel (target_nodes over the bounding box, at least
   // finest_in), and coarser only where the surface holds more than voxel_target_nodes cells at
   // that voxel: a densely sampled solid gets fewer nodes, a scene's empty space (a small solid far
@@ -64,9 +66,17 @@ double budget_in(const PointList& points, const geometry::Bounds& box, const con
   const double finest = finest_in(points, box, pool);
   const double nodes = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
   const double scene = std::max(box.diagonal() / std::sqrt(nodes), finest);
-  const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.voxel_target_nodes));
   const double occupied = static_cast<double>(geometry::count_occupied_voxels(points, scene, &box));
-  return scene * std::max(1.0, std::sqrt(occupied / target));
+  const auto for_target = [&](std::int64_t target) {
+    return scene * std::max(1.0, std::sqrt(occupied / static_cast<double>(std::max<std::int64_t>(1, target))));
+  };
+  const double voxel = for_target(cfg.voxel_target_nodes);
+  return {voxel, std::max(voxel, for_target(fewer))};
+}
+
+double budget_in(const PointList& points, const geometry::Bounds& box, const config::SegmentConfig& cfg,
+                 parallel::ThreadPool* pool) {
+  return budgets_in(points, box, cfg, cfg.voxel_target_nodes, pool).first;
 }
 
 // build_voxel_graph of points within `box` (their bounding box), at least one point.
@@ -82,6 +92,12 @@ double finest_voxel(const PointList& points, parallel::ThreadPool* pool) {
 
 double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
   return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points), cfg, pool);
+}
+
+std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
+                                        parallel::ThreadPool* pool) {
+  return points.empty() ? std::pair<double, double>{0.0, 0.0}
+                        : budgets_in(points, geometry::bounding_box(points), cfg, fewer, pool);
 }
 
 // One bounding box for the budget, its resolution bound and the binning; target_nodes stays the
