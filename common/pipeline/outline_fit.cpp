@@ -46,9 +46,13 @@ double segment_distance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, cons
 }
 
 // Each border point to the side whose segment is nearest, within the band (the later side on a
-// tie). A side whose segment's box lies farther than the best distance so far along either axis
-// cannot be nearer: it is skipped (a whisker over, so rounding never skips one that would win),
-// which leaves a ragged outline's many sides a few compares per point instead of a distance each.
+// tie). Only a side whose segment's box, widened by the band, holds the point can be within the
+// band of it: a grid of cells lists, in side order, the sides whose widened box meets each cell,
+// and a point tries those of its cell alone, in that order, so the answer is the one trying every
+// side gives (a ragged outline has dozens of sides, and the fit assigns every border point a few
+// times per side it drops). Among those, a side whose box lies farther than the best distance so
+// far along either axis cannot be nearer either: skipped (a whisker over, so rounding never skips
+// one that would win).
 void assign(std::vector<OutlineSide>& sides, const std::vector<Eigen::Vector2d>& corners,
             const std::vector<Eigen::Vector2d>& border, double band) {
   const std::size_t n = sides.size();
@@ -56,23 +60,66 @@ void assign(std::vector<OutlineSide>& sides, const std::vector<Eigen::Vector2d>&
   struct Segment {
     Eigen::Vector2d a, b, lo, hi;
   };
+  constexpr double kWhisker = 1.0 + 1e-9;
+  const double reach = band * kWhisker;
   std::vector<Segment> segments(n);
+  const Eigen::Vector2d widen = Eigen::Vector2d::Constant(reach);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  // A segment with a corner at infinity or NaN is within the band of no point: never listed.
+  std::vector<char> finite(n, 0);
   for (std::size_t k = 0; k < n; ++k) {
     const Eigen::Vector2d& a = corners[(k + n - 1) % n];
     const Eigen::Vector2d& b = corners[k];
     segments[k] = Segment{a, b, a.cwiseMin(b), a.cwiseMax(b)};
+    finite[k] = a.allFinite() && b.allFinite();
+    if (!finite[k]) continue;
+    lo = lo.cwiseMin(segments[k].lo - widen);
+    hi = hi.cwiseMax(segments[k].hi + widen);
   }
-  constexpr double kWhisker = 1.0 + 1e-9;
+  if (std::find(finite.begin(), finite.end(), 1) == finite.end()) return;
+  // Cells no smaller than the band, at most kCells a side: a point's cell is its whole search.
+  // Extents beyond what a double's cell count holds take one cell (every side tried).
+  constexpr double kCells = 32.0;
+  double cell = std::max(band, (hi - lo).maxCoeff() / kCells);
+  if (!(cell > 0.0) || !std::isfinite(cell)) cell = std::numeric_limits<double>::infinity();
+  const bool grid = std::isfinite(cell);
+  const auto cells_x = grid ? static_cast<std::size_t>((hi.x() - lo.x()) / cell) + 1 : 1;
+  const auto cells_y = grid ? static_cast<std::size_t>((hi.y() - lo.y()) / cell) + 1 : 1;
+  const auto cell_of = [&](double x, double y) {
+    if (!grid) return std::pair<std::size_t, std::size_t>{0, 0};
+    const auto cx = std::min(cells_x - 1, static_cast<std::size_t>(std::max(0.0, (x - lo.x()) / cell)));
+    const auto cy = std::min(cells_y - 1, static_cast<std::size_t>(std::max(0.0, (y - lo.y()) / cell)));
+    return std::pair<std::size_t, std::size_t>{cx, cy};
+  };
+  std::vector<std::uint32_t> begin(cells_x * cells_y + 1, 0), listed;
+  for (int fill = 0; fill < 2; ++fill) {
+    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!finite[k]) continue;
+      const auto [x0, y0] = cell_of(segments[k].lo.x() - reach, segments[k].lo.y() - reach);
+      const auto [x1, y1] = cell_of(segments[k].hi.x() + reach, segments[k].hi.y() + reach);
+      for (std::size_t cy = y0; cy <= y1; ++cy)
+        for (std::size_t cx = x0; cx <= x1; ++cx) {
+          if (fill == 0) ++begin[cy * cells_x + cx + 1];
+          else listed[next[cy * cells_x + cx]++] = static_cast<std::uint32_t>(k);
+        }
+    }
+    if (fill == 0) {
+      for (std::size_t c = 0; c + 1 < begin.size(); ++c) begin[c + 1] += begin[c];
+      listed.resize(begin.back());
+    }
+  }
   for (const auto& p : border) {
+    if (grid && !(p.x() >= lo.x() && p.x() <= hi.x() && p.y() >= lo.y() && p.y() <= hi.y())) continue;
+    const auto [cx, cy] = cell_of(p.x(), p.y());
+    const std::size_t c = cy * cells_x + cx;
     std::size_t best = n;
     double best_d = band;
-    for (std::size_t k = 0; k < n; ++k) {
+    for (std::uint32_t e = begin[c]; e < begin[c + 1]; ++e) {
+      const std::size_t k = listed[e];
       const Segment& s = segments[k];
-      const double reach = best_d * kWhisker;
-      if (p.x() < s.lo.x() - reach || p.x() > s.hi.x() + reach || p.y() < s.lo.y() - reach ||
-          p.y() > s.hi.y() + reach) {
-        continue;
-      }
+      const double r = best_d * kWhisker;
+      if (p.x() < s.lo.x() - r || p.x() > s.hi.x() + r || p.y() < s.lo.y() - r || p.y() > s.hi.y() + r) continue;
       const double d = segment_distance(p, s.a, s.b);
       if (d <= best_d) best = k, best_d = d;
     }

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -116,6 +119,51 @@ TEST(OutlineFit, AFixedSideStaysWhereItIs) {
     EXPECT_DOUBLE_EQ(s.n.y(), -1.0);
   }
   EXPECT_EQ(fixed, 1);
+}
+
+// Each border point ends with the side whose final segment (from the previous side's end to its
+// own) is nearest within the band, the later side on a tie, as trying every side for every point
+// gives: checked by brute force on a turned L traced as a ragged outline of 48 short sides, with
+// outlying points and points far beyond the band.
+TEST(OutlineFit, EachBorderPointGoesToTheNearestSideWithinTheBand) {
+  const double turn = 0.5;
+  const Eigen::Rotation2Dd rot(turn);
+  std::vector<Eigen::Vector2d> l_shape = {{0, 0}, {40, 0}, {40, 12}, {12, 12}, {12, 40}, {0, 40}};
+  for (auto& p : l_shape) p = rot * p;
+  auto border = border_of(l_shape, 0.5, 0.4, 6);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-20.0, 60.0);
+  for (int i = 0; i < 200; ++i) border.push_back(rot * Eigen::Vector2d(u(rng), u(rng)));
+  std::vector<Eigen::Vector2d> traced;  // each edge cut into 8 pieces, every other corner off by 0.6
+  for (std::size_t k = 0; k < l_shape.size(); ++k) {
+    const Eigen::Vector2d a = l_shape[k], b = l_shape[(k + 1) % l_shape.size()];
+    const Eigen::Vector2d normal = rot * Eigen::Vector2d(0, 1);
+    for (int j = 0; j < 8; ++j) traced.push_back(a + (b - a) * (j / 8.0) + (j % 2 ? 0.6 : 0.0) * normal);
+  }
+  const OutlineFitParameters p = params();
+  const auto sides = fit_outline_sides(sides_of(traced), border, p);
+  ASSERT_GE(sides.size(), 3u);
+  const std::size_t n = sides.size();
+  const double band = p.band_cells * p.cell;
+  std::size_t assigned = 0;
+  for (const auto& q : border) {
+    std::size_t best = n;
+    double best_d = band;
+    for (std::size_t k = 0; k < n; ++k) {
+      const Eigen::Vector2d a = sides[(k + n - 1) % n].end, b = sides[k].end;
+      const Eigen::Vector2d ab = b - a;
+      const double t = ab.squaredNorm() > 0.0 ? std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+      const double d = (q - a - t * ab).norm();
+      if (d <= best_d) best = k, best_d = d;
+    }
+    std::size_t holder = n;
+    for (std::size_t k = 0; k < n; ++k)
+      if (std::find(sides[k].points.begin(), sides[k].points.end(), q) != sides[k].points.end()) holder = k;
+    EXPECT_EQ(holder, best) << q.transpose();
+    assigned += best < n;
+  }
+  EXPECT_GT(assigned, border.size() / 2);
+  EXPECT_LT(assigned, border.size());
 }
 
 // Fewer than three sides, or a border that leaves fewer standing: no outline.
