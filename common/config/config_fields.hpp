@@ -167,6 +167,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("side_face_min_share", c.side_face_min_share);
   f("flat_face_fill_cells", c.flat_face_fill_cells);
   f("flat_face_min_fill", c.flat_face_min_fill);
+  f("arc_max_scatter_cells", c.arc_max_scatter_cells);
+  f("arc_min_sagitta_cells", c.arc_min_sagitta_cells);
   f("box_face_rect_fill", c.box_face_rect_fill);
   f("box_outline_min_share", c.box_outline_min_share);
   f("stray_face_degrees", c.stray_face_degrees);

@@ -1,5 +1,6 @@
 #include "pipeline/solve.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -8,6 +9,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "geometry/circle.hpp"
 #include "geometry/convex_hull.hpp"
 #include "geometry/oriented_box.hpp"
 #include "geometry/polygon.hpp"
@@ -90,9 +92,39 @@ double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell)
   return std::min(1.0, static_cast<double>(cells.size()) * cell * cell / area);
 }
 
+// Whether a plane's points trace one circular arc in it, bowing well beyond their scatter about it
+// (a lidar's scan ring on a sphere or a can): a curve, whatever share of its thin hull its cells
+// cover. The scatter at most `max_scatter`, the arc's sagitta over its chord at least `min_sagitta`.
+bool traces_an_arc(const PointList& cloud, const DetectedPlane& face, double max_scatter, double min_sagitta) {
+  if (face.inliers.size() < 5 || !(min_sagitta > 0.0)) return false;
+  const Eigen::Vector3d n = face.plane.normal.normalized();
+  const Point origin = cloud[face.inliers.front()];
+  const auto circle = geometry::fit_circle_in_plane(cloud, face.inliers, origin, n);
+  if (!circle || !(circle->radius > 0.0) || !std::isfinite(circle->radius)) return false;
+  const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+  double sum_sq = 0.0;
+  std::vector<Eigen::Vector2d> flat;
+  flat.reserve(face.inliers.size());
+  for (std::uint32_t i : face.inliers) {
+    const Eigen::Vector3d d = cloud[i] - circle->center;
+    const Eigen::Vector3d in_plane = d - d.dot(n) * n;
+    sum_sq += (in_plane.norm() - circle->radius) * (in_plane.norm() - circle->radius);
+    flat.emplace_back(cloud[i].dot(u), cloud[i].dot(v));
+  }
+  if (std::sqrt(sum_sq / static_cast<double>(face.inliers.size())) > max_scatter) return false;
+  // The chord: the points' longest extent (the hull's diameter, over its vertex pairs).
+  const geometry::Polygon2 hull = geometry::convex_hull_2d(std::move(flat));
+  double chord = 0.0;
+  for (std::size_t a = 0; a < hull.size(); ++a)
+    for (std::size_t b = a + 1; b < hull.size(); ++b) chord = std::max(chord, (hull[a] - hull[b]).norm());
+  const double half = 0.5 * chord, r = circle->radius;
+  const double sagitta = half >= r ? r : r - std::sqrt(r * r - half * half);
+  return sagitta >= min_sagitta;
+}
+
 // Share of the points off the solid's caps (true faces with their normal along its axis; a
 // sphere has none) that lie on true flat faces their points fill (hull_fill of at least
-// `min_fill`; `fills` holds each plane's, NaN until first needed: the same for every candidate
+// `min_fill`; a plane whose points trace an arc, traces_an_arc, is none); `fills` holds each plane's, NaN until first needed: the same for every candidate
 // solid, so computed once per object): a curved side is no face, so a cloud that is flat faces
 // all round (an octahedron, whose corners ring some axis; a tetrahedron seen about a corner) is
 // none. Only faces holding `large_share` of the points count for a cone or frustum: its side
@@ -100,8 +132,8 @@ double hull_fill(const PointList& cloud, const DetectedPlane& face, double cell)
 // small. Zero where the caps hold most of the points: the side is too little to judge by, and
 // the caps' rim passes for flat strips.
 double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, const PointList& cloud,
-                       double cos_parallel, double cell, double min_fill, double large_share,
-                       std::vector<double>& fills) {
+                       double cos_parallel, double cell, double min_fill, double large_share, double arc_scatter,
+                       double arc_sagitta, std::vector<double>& fills) {
   const std::size_t points = cloud.size();
   const bool tapered = s.shape == Shape::cone || s.shape == Shape::frustum;
   const bool revolution = s.shape == Shape::cylinder || tapered;
@@ -115,7 +147,8 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
       caps += p.inliers.size();
       continue;
     }
-    if (std::isnan(fills[k])) fills[k] = hull_fill(cloud, p, cell);
+    if (std::isnan(fills[k]))
+      fills[k] = traces_an_arc(cloud, p, arc_scatter * cell, arc_sagitta * cell) ? 0.0 : hull_fill(cloud, p, cell);
     if (fills[k] < min_fill) continue;
     flat += p.inliers.size();
     if (static_cast<double>(p.inliers.size()) >= large_share * static_cast<double>(points)) large += p.inliers.size();
@@ -175,7 +208,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const auto admissible = [&](const std::optional<FittedSolid>& solid) {
     return solid && detail::plausible(*solid, diameter, cfg.max_size_ratio) &&
            flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
-                           cfg.flat_face_min_fill, cfg.side_face_min_share, fills) <= cfg.curved_side_flat_share;
+                           cfg.flat_face_min_fill, cfg.side_face_min_share, cfg.arc_max_scatter_cells,
+                           cfg.arc_min_sagitta_cells, fills) <= cfg.curved_side_flat_share;
   };
   for (Shape shape : candidates) {
     auto solid = fit_solid(shape, input);
