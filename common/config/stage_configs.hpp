@@ -91,7 +91,7 @@ struct ClassifyConfig {
 struct SegmentConfig {
   std::int64_t target_nodes = 40000;       // organized: the graph has about this many nodes (pixel stride chosen for it)
   std::int64_t voxel_target_nodes = 20000; // unorganized: a surface occupying more cells than this is gridded coarser, to about this many
-  std::int64_t isolated_target_nodes = 5000; // unorganized, not a lidar frame: gridded to about this many nodes first, and kept there unless a plane reaches structure_reach beyond what stands on it (0: off)
+  std::int64_t isolated_target_nodes = 5000; // unorganized, not a lidar frame: gridded to about this many nodes first, and segmented there when no plane reaches structure_reach beyond what stands on it and one object leaves out fewer than min_object_nodes points (0: off)
   double depth_jump = 0.02;                // organized: neighbours whose ranges differ by more than this share of the range are not connected
   std::int64_t normal_radius = 2;          // organized: half-width of a node's normal window, in nodes
   double crease_degrees = 25.0;            // organized: normals normal_radius nodes away either side turning concavely by more than this: a crease ...

@@ -77,7 +77,7 @@ void assign(std::vector<OutlineSide>& sides, const std::vector<Eigen::Vector2d>&
     hi = hi.cwiseMax(segments[k].hi + widen);
   }
   if (std::find(finite.begin(), finite.end(), 1) == finite.end()) return;
-  // Cells no smaller than the band, at most kCells a side: a point's cell is its whole search.
+  // Cells no smaller than the band, at most kCells + 1 a side: a point's cell is its whole search.
   // Extents beyond what a double's cell count holds take one cell (every side tried).
   constexpr double kCells = 32.0;
   double cell = std::max(band, (hi - lo).maxCoeff() / kCells);

@@ -112,19 +112,24 @@ bool traces_an_arc(const PointList& cloud, const DetectedPlane& face, double max
     flat.emplace_back(cloud[i].dot(u), cloud[i].dot(v));
   }
   if (std::sqrt(sum_sq / static_cast<double>(face.inliers.size())) > max_scatter) return false;
-  // The chord: the points' longest extent (the hull's diameter, over its vertex pairs).
-  const geometry::Polygon2 hull = geometry::convex_hull_2d(std::move(flat));
-  double chord = 0.0;
-  for (std::size_t a = 0; a < hull.size(); ++a)
-    for (std::size_t b = a + 1; b < hull.size(); ++b) chord = std::max(chord, (hull[a] - hull[b]).norm());
-  const double half = 0.5 * chord, r = circle->radius;
-  const double sagitta = half >= r ? r : r - std::sqrt(r * r - half * half);
+  // The arc's span: the circle less the widest gap between the points' angles about its centre.
+  std::vector<double> angle;
+  angle.reserve(flat.size());
+  const Eigen::Vector2d c(circle->center.dot(u), circle->center.dot(v));
+  for (const Eigen::Vector2d& q : flat) angle.push_back(std::atan2(q.y() - c.y(), q.x() - c.x()));
+  std::sort(angle.begin(), angle.end());
+  constexpr double kTwoPi = 6.283185307179586;
+  double widest = angle.front() + kTwoPi - angle.back();
+  for (std::size_t i = 1; i < angle.size(); ++i) widest = std::max(widest, angle[i] - angle[i - 1]);
+  const double span = kTwoPi - widest, r = circle->radius;
+  // Over half a turn the arc bows its whole radius off the chord across its widest part.
+  const double sagitta = span >= 0.5 * kTwoPi ? r : r * (1.0 - std::cos(0.5 * span));
   return sagitta >= min_sagitta;
 }
 
 // Share of the points off the solid's caps (true faces with their normal along its axis; a
 // sphere has none) that lie on true flat faces their points fill (hull_fill of at least
-// `min_fill`; a plane whose points trace an arc, traces_an_arc, is none); `fills` holds each plane's, NaN until first needed: the same for every candidate
+// `min_fill`; a plane whose points trace an arc, traces_an_arc, is none: its fill is held as -1); `fills` holds each plane's, NaN until first needed: the same for every candidate
 // solid, so computed once per object): a curved side is no face, so a cloud that is flat faces
 // all round (an octahedron, whose corners ring some axis; a tetrahedron seen about a corner) is
 // none. Only faces holding `large_share` of the points count for a cone or frustum: its side
@@ -148,7 +153,7 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
       continue;
     }
     if (std::isnan(fills[k]))
-      fills[k] = traces_an_arc(cloud, p, arc_scatter * cell, arc_sagitta * cell) ? 0.0 : hull_fill(cloud, p, cell);
+      fills[k] = traces_an_arc(cloud, p, arc_scatter * cell, arc_sagitta * cell) ? -1.0 : hull_fill(cloud, p, cell);
     if (fills[k] < min_fill) continue;
     flat += p.inliers.size();
     if (static_cast<double>(p.inliers.size()) >= large_share * static_cast<double>(points)) large += p.inliers.size();

@@ -17,8 +17,7 @@ std::optional<RemainderGraph> finer_remainder_graph(const PointList& points, con
     ++kept_nodes;
     spacing.push_back(graph.spacing[n]);
   }
-  // Nothing removed: the remainder is the graph's own cloud, already at the resolution chosen for it.
-  if (kept_nodes == 0 || kept_nodes == graph.size()) return std::nullopt;
+  if (kept_nodes == 0) return std::nullopt;
   std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
   const double coarse = spacing[spacing.size() / 2];
   // The voxel for the node budget alone; the sampling's floor can only make it coarser, so a

@@ -23,8 +23,7 @@ struct RemainderGraph {
 // square root of kept nodes over the budget: a surface fills voxels with the inverse square of
 // the edge), never finer than finest_voxel (their sampling). None when the budget's voxel is not
 // at least cfg.remainder_refine times finer than that spacing (the graph already holds the
-// remainder at its resolution: an isolated solid), when nothing was removed, or the sampling allows
-// no finer voxel at all.
+// remainder at its resolution: an isolated solid), or the sampling allows no finer voxel at all.
 // A remainder the budget would grid much finer is gridded as finely as its sampling allows: a
 // lidar frame's ball among its ring leftovers, whose sampling floor is 1.9 times finer than the
 // scene graph, would otherwise be a few nodes. Keeps `graph`'s viewpoint (normals towards it).

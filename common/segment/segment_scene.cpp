@@ -63,7 +63,7 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 // An unorganized cloud without a lidar's viewpoint (`may_be_isolated`) is gridded to
 // cfg.isolated_target_nodes first when that is coarser than the scene's budget, and segmented
 // there when that graph holds no plane reaching cfg.structure_reach times beyond what stands on it
-// and the segmentation gives one object of nearly all the points (isolated_whole): a lone solid
+// and the segmentation gives one object of all the points but a few (isolated_whole): a lone solid
 // needs no finer graph. Otherwise (a support in view, several objects, a part left out) it is a
 // scene, segmented again at cfg.voxel_target_nodes: what it would have been without the trial.
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
@@ -88,11 +88,12 @@ std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
   return parts;
 }
 
-// One object holding all the points but fewer than cfg.min_object_share of them: at the scene's
-// finer budget a part that small could be no object of its own either.
+// One object holding all the points but fewer than cfg.min_object_nodes of them: so few points
+// make fewer nodes than an object needs at any resolution, so nothing the scene's finer graph
+// could keep was left out.
 bool isolated_whole(const SceneSegmentation& s, std::size_t points, const config::SegmentConfig& cfg) {
   return s.objects.size() == 1 &&
-         static_cast<double>(points - s.objects.front().size()) <= cfg.min_object_share * static_cast<double>(points);
+         static_cast<std::int64_t>(points - s.objects.front().size()) < cfg.min_object_nodes;
 }
 
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
@@ -132,7 +133,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   // What the structure leaves of a wide, sparse scene, at its own (finer) resolution; input
   // indices through `kept` from then on.
   std::vector<std::uint32_t> kept;
-  if (!grid.organized()) {
+  // (The trial's graph is already the cloud at its own resolution, nothing removed from it.)
+  if (!grid.organized() && !isolated) {
     if (std::optional<RemainderGraph> finer = finer_remainder_graph(points, g, removed, cfg, pool)) {
       // A coarse voxel where a solid meets its ground or wall holds points of both, and is kept
       // whole: the finer graph's nodes there within the plane's noise of the height its points

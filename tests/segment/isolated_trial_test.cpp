@@ -102,5 +102,47 @@ TEST(SegmentIsolatedTrial, ASmallSolidBesideADenseOneMakesAScene) {
   EXPECT_EQ(s.objects, as_scene.objects);
 }
 
+// A small sparse ball 0.3 m beside a dense box: on the coarser graph it is left out (a few
+// nodes), and the 180 points left out are more than cfg.min_object_nodes, so the cloud is a
+// scene: the ball is an object of its own, as without the trial.
+TEST(SegmentIsolatedTrial, ASmallSparseSolidBesideADenseOneIsKept) {
+  std::mt19937_64 rng(4);
+  PointList cloud = box_surface({0.4, 0.3, 0.2}, {0.0, 0.0, 0.0}, 100000, rng);
+  const PointList ball = sphere_surface(0.025, {0.2, 0.65, 0.1}, 180, rng);
+  cloud.insert(cloud.end(), ball.begin(), ball.end());
+  const config::SegmentConfig cfg;
+  const SceneSegmentation s = segment_scene(cloud, GridLayout{}, cfg);
+  const SceneSegmentation as_scene = segment_scene(cloud, GridLayout{}, without_trial());
+  ASSERT_EQ(as_scene.objects.size(), 2u);
+  EXPECT_EQ(s.objects, as_scene.objects);
+}
+
+// Two small balls 10 m apart, sparse (no coarser graph to try): both found, each whole. The
+// structure search removes nothing, and what it leaves is still gridded at its own resolution
+// (at the scene's voxel each ball is a few nodes).
+TEST(SegmentIsolatedTrial, TwoSmallSolidsFarApartAreBothFound) {
+  std::mt19937_64 rng(5);
+  PointList cloud = sphere_surface(0.05, {0.0, 0.0, 0.0}, 2000, rng);
+  const PointList other = sphere_surface(0.05, {10.0, 0.0, 0.0}, 2000, rng);
+  cloud.insert(cloud.end(), other.begin(), other.end());
+  const SceneSegmentation s = segment_scene(cloud, GridLayout{}, config::SegmentConfig{});
+  ASSERT_EQ(s.objects.size(), 2u);
+  EXPECT_EQ(s.objects[0].size(), 2000u);
+  EXPECT_EQ(s.objects[1].size(), 2000u);
+}
+
+// The trial and its segmentation on two threads: the same objects as on one.
+TEST(SegmentIsolatedTrial, AnyThreadCountGivesTheSameObjects) {
+  std::mt19937_64 rng(6);
+  PointList cloud = box_surface({0.4, 0.3, 0.2}, {0.1, -0.2, 0.5}, 100000, rng);
+  const PointList ball = sphere_surface(0.025, {0.3, 0.45, 0.6}, 180, rng);
+  cloud.insert(cloud.end(), ball.begin(), ball.end());
+  parallel::ThreadPool pool(2);
+  const config::SegmentConfig cfg;
+  const PointList lone(cloud.begin(), cloud.begin() + 100000);
+  EXPECT_EQ(segment_scene(lone, GridLayout{}, cfg).objects, segment_scene(lone, GridLayout{}, cfg, &pool).objects);
+  EXPECT_EQ(segment_scene(cloud, GridLayout{}, cfg).objects, segment_scene(cloud, GridLayout{}, cfg, &pool).objects);
+}
+
 }  // namespace
 }  // namespace cloudshape::segment
