@@ -2,6 +2,8 @@
 // (thesis eq. 3.7-3.8) and least-squares circle (in a plane) and sphere fits.
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -36,5 +38,16 @@ std::optional<Circle3> fit_circle_in_plane(const PointList& points,
 std::optional<SphereFit> fit_sphere(const PointList& points,
                                     const std::vector<std::uint32_t>& indices);
 std::optional<SphereFit> fit_sphere(const PointList& points);
+
+// The widest gap, in radians, between `angles` (radians, atan2's range) around the circle, the
+// wrap from the last to the first included; sorts `angles`. At least one angle: one alone leaves
+// the whole turn.
+inline double widest_angular_gap(std::vector<double>& angles) {
+  constexpr double kTurn = 2.0 * 3.14159265358979323846;
+  std::sort(angles.begin(), angles.end());
+  double gap = angles.front() + kTurn - angles.back();
+  for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
+  return gap;
+}
 
 }  // namespace cloudshape::geometry

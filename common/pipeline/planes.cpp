@@ -5,6 +5,7 @@
 #include <optional>
 #include <random>
 
+#include "geometry/circle.hpp"
 #include "pipeline/plane_patch.hpp"
 
 #if defined(__SSE2__)
@@ -145,10 +146,7 @@ std::vector<std::uint32_t> find_plane_boundary(const geometry::KdTree& tree,
         out.push_back(i);
         continue;
       }
-      std::sort(angles.begin(), angles.end());
-      double gap = angles.front() + 2.0 * kPi - angles.back();
-      for (std::size_t k = 1; k < angles.size(); ++k) gap = std::max(gap, angles[k] - angles[k - 1]);
-      if (gap > gap_limit) out.push_back(i);
+      if (geometry::widest_angular_gap(angles) > gap_limit) out.push_back(i);
     }
   });
   std::vector<std::uint32_t> out;

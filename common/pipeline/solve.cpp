@@ -117,11 +117,8 @@ bool traces_an_arc(const PointList& cloud, const DetectedPlane& face, double max
   angle.reserve(flat.size());
   const Eigen::Vector2d c(circle->center.dot(u), circle->center.dot(v));
   for (const Eigen::Vector2d& q : flat) angle.push_back(std::atan2(q.y() - c.y(), q.x() - c.x()));
-  std::sort(angle.begin(), angle.end());
   constexpr double kTwoPi = 6.283185307179586;
-  double widest = angle.front() + kTwoPi - angle.back();
-  for (std::size_t i = 1; i < angle.size(); ++i) widest = std::max(widest, angle[i] - angle[i - 1]);
-  const double span = kTwoPi - widest, r = circle->radius;
+  const double span = kTwoPi - geometry::widest_angular_gap(angle), r = circle->radius;
   // Over half a turn the arc bows its whole radius off the chord across its widest part.
   const double sagitta = span >= 0.5 * kTwoPi ? r : r * (1.0 - std::cos(0.5 * span));
   return sagitta >= min_sagitta;

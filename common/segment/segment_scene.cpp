@@ -96,30 +96,16 @@ bool isolated_whole(const SceneSegmentation& s, std::size_t points, const config
          static_cast<std::int64_t>(points - s.objects.front().size()) < cfg.min_object_nodes;
 }
 
-SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
-                               bool may_be_isolated) {
+// The objects of `g`, a graph of `points` (`scan`: the lidar's viewpoint, if any). `isolated`: the
+// trial's graph, on which the structure search found nothing to remove, and which already holds
+// the cloud at its own resolution.
+SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList& points, const GridLayout& grid,
+                                const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
+                                const std::optional<Point>& scan) {
   SceneSegmentation out;
-  if (!grid.organized() && !scan) scan = scan_origin(points, cfg, pool);
-  NeighbourGraph g;
-  bool isolated = false;  // on the trial's coarser graph, whose structure search removed nothing
-  if (grid.organized() && grid.pixel.size() == points.size()) {
-    g = build_organized_graph(points, grid, cfg, pool);
-  } else {
-    may_be_isolated = may_be_isolated && !grid.organized() && !scan->has_value() && cfg.isolated_target_nodes > 0;
-    const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool);
-    if (may_be_isolated && coarse > scene) {
-      g = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool);
-      std::vector<char> none(g.size(), 0);
-      std::size_t reaching = 0;
-      remove_structure(g, cfg, none, pool, false, &reaching);
-      isolated = reaching == 0;
-    }
-    if (!isolated) g = build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool);
-  }
   if (g.size() == 0) return out;
   out.graph_nodes = g.size();
-  if (!grid.organized()) orient_to_viewpoint(g, *scan);
+  if (!grid.organized()) orient_to_viewpoint(g, scan);
   out.viewpoint = g.viewpoint;
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
@@ -133,7 +119,6 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   // What the structure leaves of a wide, sparse scene, at its own (finer) resolution; input
   // indices through `kept` from then on.
   std::vector<std::uint32_t> kept;
-  // (The trial's graph is already the cloud at its own resolution, nothing removed from it.)
   if (!grid.organized() && !isolated) {
     if (std::optional<RemainderGraph> finer = finer_remainder_graph(points, g, removed, cfg, pool)) {
       // A coarse voxel where a solid meets its ground or wall holds points of both, and is kept
@@ -190,7 +175,7 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       std::vector<double> spacing;
       for (std::uint32_t n : members[s]) spacing.push_back(g.spacing[n]);
       std::nth_element(spacing.begin(), spacing.begin() + spacing.size() / 2, spacing.end());
-      if (auto parts = at_own_resolution(points, segment_points[s], spacing[spacing.size() / 2], cfg, pool, *scan)) {
+      if (auto parts = at_own_resolution(points, segment_points[s], spacing[spacing.size() / 2], cfg, pool, scan)) {
         for (auto& part : *parts) refined.push_back(std::move(part));
         continue;
       }
@@ -215,8 +200,31 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
                     out.objects.end());
   std::stable_sort(out.objects.begin(), out.objects.end(),
                    [](const auto& a, const auto& b) { return a.size() > b.size(); });
-  if (isolated && !isolated_whole(out, points.size(), cfg)) return segment_part(points, grid, cfg, pool, scan, false);
   return out;
+}
+
+SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
+                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
+                               bool may_be_isolated) {
+  if (!grid.organized() && !scan) scan = scan_origin(points, cfg, pool);
+  const std::optional<Point> view = scan ? *scan : std::nullopt;
+  if (grid.organized() && grid.pixel.size() == points.size()) {
+    return segment_graph(build_organized_graph(points, grid, cfg, pool), false, points, grid, cfg, pool, view);
+  }
+  may_be_isolated = may_be_isolated && !grid.organized() && !view && cfg.isolated_target_nodes > 0;
+  const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool);
+  if (may_be_isolated && coarse > scene) {
+    NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool);
+    std::vector<char> none(trial.size(), 0);
+    std::size_t reaching = 0;
+    remove_structure(trial, cfg, none, pool, false, &reaching);
+    if (reaching == 0) {
+      SceneSegmentation out = segment_graph(std::move(trial), true, points, grid, cfg, pool, view);
+      if (isolated_whole(out, points.size(), cfg)) return out;
+    }
+  }
+  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool), false, points, grid, cfg, pool,
+                       view);
 }
 
 }  // namespace

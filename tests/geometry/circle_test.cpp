@@ -73,5 +73,19 @@ TEST(SphereFit, TooFewPointsGiveNothing) {
   EXPECT_FALSE(fit_sphere(PointList{Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)}));
 }
 
+// The widest gap between angles around the circle: between neighbours, or across the wrap from
+// the last back to the first; one angle alone leaves the whole turn.
+TEST(WidestAngularGap, BetweenNeighboursOrAcrossTheWrap) {
+  const double pi = 3.14159265358979323846;
+  std::vector<double> inside = {0.5, -2.0, 1.0, 3.0};  // gaps 2.5, 0.5, 2.0 and across the wrap 1.28
+  EXPECT_NEAR(widest_angular_gap(inside), 2.5, 1e-12);
+  std::vector<double> wrap = {3.0, -3.0, 0.0};  // gaps 3.0, 3.0 and across the wrap 2 pi - 6
+  EXPECT_NEAR(widest_angular_gap(wrap), 3.0, 1e-12);
+  std::vector<double> arc = {-0.1, 0.1, 0.0};  // a short arc: the rest of the turn is the gap
+  EXPECT_NEAR(widest_angular_gap(arc), 2.0 * pi - 0.2, 1e-12);
+  std::vector<double> one = {1.0};
+  EXPECT_NEAR(widest_angular_gap(one), 2.0 * pi, 1e-12);
+}
+
 }  // namespace
 }  // namespace cloudshape::geometry

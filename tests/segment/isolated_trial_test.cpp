@@ -8,6 +8,7 @@
 #include "config/stage_configs.hpp"
 #include "segment/neighbour_graph.hpp"
 #include "segment/segment_scene.hpp"
+#include "box_surface.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -15,17 +16,7 @@ namespace {
 // The surface of an axis-aligned box, `size`, lowest corner at `corner`, sampled at random.
 PointList box_surface(const Eigen::Vector3d& size, const Eigen::Vector3d& corner, std::size_t n,
                       std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const double areas[3] = {size.y() * size.z(), size.x() * size.z(), size.x() * size.y()};
-  PointList pts;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double pick = u(rng) * (areas[0] + areas[1] + areas[2]);
-    const int axis = pick < areas[0] ? 0 : pick < areas[0] + areas[1] ? 1 : 2;
-    Eigen::Vector3d p(u(rng) * size.x(), u(rng) * size.y(), u(rng) * size.z());
-    p[axis] = u(rng) < 0.5 ? 0.0 : size[axis];
-    pts.push_back(corner + p);
-  }
-  return pts;
+  return testing::box_surface(size, Eigen::Matrix3d::Identity(), corner, n, rng);
 }
 
 // A sphere's surface, radius r about c.

@@ -15,6 +15,7 @@
 #include "geometry/voxel_grid.hpp"
 #include "segment/detail/graph_moments.hpp"
 #include "segment/neighbour_graph.hpp"
+#include "box_surface.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -22,20 +23,9 @@ namespace {
 // The surface of a tilted 40 x 30 x 20 box, sampled at random.
 PointList tilted_box(std::size_t n, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  const Eigen::Vector3d size(40.0, 30.0, 20.0);
-  const double areas[3] = {size.y() * size.z(), size.x() * size.z(), size.x() * size.y()};
   const Eigen::Matrix3d turn =
       (Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX())).matrix();
-  PointList pts;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double pick = u(rng) * (areas[0] + areas[1] + areas[2]);
-    const int axis = pick < areas[0] ? 0 : pick < areas[0] + areas[1] ? 1 : 2;
-    Eigen::Vector3d p(u(rng) * size.x(), u(rng) * size.y(), u(rng) * size.z());
-    p[axis] = u(rng) < 0.5 ? 0.0 : size[axis];
-    pts.push_back(turn * p + Eigen::Vector3d(5.0, -3.0, 2.0));
-  }
-  return pts;
+  return testing::box_surface({40.0, 30.0, 20.0}, turn, {5.0, -3.0, 2.0}, n, rng);
 }
 
 TEST(SegmentVoxelGraph, NodesAreTheCentroidsOfTheirPointsAndNeighboursAreMutual) {
