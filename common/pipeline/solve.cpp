@@ -149,8 +149,11 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
       caps += p.inliers.size();
       continue;
     }
-    if (std::isnan(fills[k]))
-      fills[k] = traces_an_arc(cloud, p, arc_scatter * cell, arc_sagitta * cell) ? -1.0 : hull_fill(cloud, p, cell);
+    // The arc test only where the fill alone would count the plane flat: it costs a circle fit.
+    if (std::isnan(fills[k])) {
+      fills[k] = hull_fill(cloud, p, cell);
+      if (fills[k] >= min_fill && traces_an_arc(cloud, p, arc_scatter * cell, arc_sagitta * cell)) fills[k] = -1.0;
+    }
     if (fills[k] < min_fill) continue;
     flat += p.inliers.size();
     if (static_cast<double>(p.inliers.size()) >= large_share * static_cast<double>(points)) large += p.inliers.size();
