@@ -23,6 +23,11 @@ std::uint64_t key_of(const StructureFootprint& f, const Point& p) {
 // A flat plane: the cells its nodes lie in, at height 0, and its points' distances from it.
 void add_node_cells(const PointList& points, const NeighbourGraph& graph, const std::vector<std::int32_t>& plane_of,
                     std::vector<StructureFootprint>& out, std::vector<std::vector<double>>& distance) {
+  std::vector<std::size_t> count(out.size(), 0);
+  for (const std::uint32_t n : graph.node_of_point) {
+    if (n != kNoNode && plane_of[n] >= 0) ++count[plane_of[n]];
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) distance[k].reserve(count[k]);
   for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
     const std::uint32_t n = graph.node_of_point[i];
     if (n == kNoNode || plane_of[n] < 0) continue;
@@ -49,22 +54,26 @@ void add_cell_heights(const PointList& points, const NeighbourGraph& graph, cons
   // Each point's cell numbered as first met (one look-up a point), then the heights grouped by
   // cell in one array (a counting sort): a median per cell without a vector per cell.
   constexpr std::uint32_t kNoCell = 0xffffffffu;
-  std::vector<std::unordered_map<std::uint64_t, std::uint32_t>> cell_index(out.size());
-  std::vector<std::pair<std::int32_t, std::uint64_t>> cell_ids;  // plane, in-plane key
+  std::vector<detail::KeyIndex> cell_index(out.size());
+  std::vector<std::vector<std::uint32_t>> cell_number(out.size());  // per plane: its cells' numbers here
+  std::vector<std::pair<std::int32_t, std::uint64_t>> cell_ids;   // plane, in-plane key
   std::vector<std::uint32_t> cell_of(points.size(), kNoCell), cell_begin;
   std::vector<double> height_of(points.size(), 0.0);
   for (std::size_t i = 0; i < graph.node_of_point.size(); ++i) {
     const std::uint32_t n = graph.node_of_point[i];
     if (n == kNoNode || plane_of[n] < 0 || !beside_kept[n] || !(out[plane_of[n]].cell > 0.0)) continue;
     const StructureFootprint& f = out[plane_of[n]];
-    const auto [slot, added] =
-        cell_index[plane_of[n]].try_emplace(key_of(f, points[i]), static_cast<std::uint32_t>(cell_ids.size()));
+    const std::uint64_t key = key_of(f, points[i]);
+    bool added = false;
+    const std::uint32_t local = cell_index[plane_of[n]].index(key, added);
     if (added) {
-      cell_ids.emplace_back(plane_of[n], slot->first);
+      cell_number[plane_of[n]].push_back(static_cast<std::uint32_t>(cell_ids.size()));
+      cell_ids.emplace_back(plane_of[n], key);
       cell_begin.push_back(0);
     }
-    cell_of[i] = slot->second;
-    ++cell_begin[slot->second];
+    const std::uint32_t cell = cell_number[plane_of[n]][local];
+    cell_of[i] = cell;
+    ++cell_begin[cell];
     height_of[i] = f.plane.signed_distance(points[i]);
   }
   std::uint32_t total = 0;
@@ -113,7 +122,8 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
     f.plane = planes[k].plane;
-    f.cell = detail::median(spacing[k]);
+    f.cells = detail::CellValues(spacing[k].size());
+    f.cell = detail::median(std::move(spacing[k]));
     geometry::plane_basis(f.plane.normal, f.u, f.v);
   }
   // The noise of the plane's own points: their median absolute distance (from the plane, or from
@@ -127,11 +137,11 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
   }
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
-    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(distance[k]), cfg.contact_min_band * f.cell);
+    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(std::move(distance[k])), cfg.contact_min_band * f.cell);
     if (f.cells.empty()) continue;
     f.lowest = std::numeric_limits<double>::infinity();
     f.highest = -std::numeric_limits<double>::infinity();
-    for (const auto& [key, height] : f.cells) {
+    for (const double height : f.cells.values()) {
       f.lowest = std::min(f.lowest, height);
       f.highest = std::max(f.highest, height);
     }
@@ -147,8 +157,8 @@ bool on_structure(const std::vector<StructureFootprint>& footprints, const Point
     const auto y = static_cast<std::int64_t>(std::floor(p.dot(f.v) / f.cell));
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        const auto cell = f.cells.find(cell_key(x + dx, y + dy));
-        if (cell != f.cells.end() && std::abs(d - cell->second) <= f.band) return true;
+        const double* height = f.cells.find(cell_key(x + dx, y + dy));
+        if (height != nullptr && std::abs(d - *height) <= f.band) return true;
       }
     }
   }

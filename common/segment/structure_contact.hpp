@@ -3,11 +3,11 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
+#include "segment/detail/key_index.hpp"
 #include "segment/neighbour_graph.hpp"
 #include "segment/structure_planes.hpp"
 
@@ -20,7 +20,7 @@ struct StructureFootprint {
   double band = 0.0;  // cfg.contact_noise_sigmas robust deviations of its points about their cells' heights, at least cfg.contact_min_band node spacings
   double cell = 0.0;  // its nodes' median spacing
   Eigen::Vector3d u = Eigen::Vector3d::UnitX(), v = Eigen::Vector3d::UnitY();  // in-plane axes
-  std::unordered_map<std::uint64_t, double> cells;  // in-plane cells of `cell` it covers, each with its points' height
+  detail::CellValues cells;  // in-plane cells of `cell` it covers, each with its points' height
   double lowest = 0.0, highest = 0.0;  // the cells' heights span this
 };
 

@@ -5,13 +5,15 @@
 #include <optional>
 #include <random>
 
-#include "geometry/detail/flat_hash.hpp"
 #include "geometry/pca.hpp"
+#include "segment/detail/key_index.hpp"
 #include "segment/detail/robust_spread.hpp"
 #include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
 namespace {
+
+using detail::KeyIndex;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -125,32 +127,6 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   }
   return fit;
 }
-
-// Distinct 64-bit keys numbered in order of arrival, on the flat cell map (whose empty-slot
-// marker, all bits set, is a key of its own here: the cell (-1, -1)).
-class KeyIndex {
- public:
-  static constexpr std::uint32_t kAbsent = geometry::detail::CellMap::kAbsent;
-  explicit KeyIndex(std::size_t expected) : map_(expected) {}
-  std::uint32_t index(std::uint64_t key, bool& added) {
-    if (key == kAllOnes) {
-      added = all_ones_ == kAbsent;
-      if (added) all_ones_ = size_++;
-      return all_ones_;
-    }
-    const std::uint32_t i = map_.find_or_insert(key, size_, added);
-    if (added) ++size_;
-    return i;
-  }
-  std::uint32_t find(std::uint64_t key) const { return key == kAllOnes ? all_ones_ : map_.find(key); }
-  std::size_t size() const { return size_; }
-
- private:
-  static constexpr std::uint64_t kAllOnes = ~std::uint64_t{0};
-  geometry::detail::CellMap map_;
-  std::uint32_t all_ones_ = kAbsent;
-  std::uint32_t size_ = 0;
-};
 
 // The cell of an in-plane coordinate; clamped, since a node spacing near zero makes the quotient
 // overflow any integer (found by fuzzing PointCloud2 input: a cast of infinity is undefined).
