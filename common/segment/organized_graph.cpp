@@ -12,6 +12,7 @@
 
 #include "segment/detail/concave_creases.hpp"
 #include "segment/detail/graph_moments.hpp"
+#include "segment/detail/median_pixel.hpp"
 
 namespace cloudshape::segment {
 
@@ -21,64 +22,75 @@ using detail::normal_of;
 
 namespace {
 
-// A pixel's point and range, side by side for the windows' reads; a pixel without a point has a
-// NaN range, which fails every same-surface test (an empty pixel is never on a node's surface).
-struct Pixel {
-  Point point = Point::Zero();
-  double range = std::numeric_limits<double>::quiet_NaN();
+// A depth image as the normal windows read it: per pixel its (last) point and that point's range,
+// row-major, `width` wide; a pixel without a point has index -1 and a NaN range, which fails
+// every same-surface test (an empty pixel is never on a node's surface).
+struct PixelImage {
+  const std::int32_t* point;
+  const double* range;
+  std::size_t width;
 };
 
-// Moments::add over a node's window, two entries at a time where SSE2 is: each entry the same
-// difference, products and sums in the same order (IEEE double lanes), so the same moments.
-class WindowMoments {
- public:
-  explicit WindowMoments(const Point& origin) {
-    m_.origin = origin;
-#if defined(__SSE2__)
-    origin_xy_ = _mm_loadu_pd(origin.data());
-    origin_z_ = _mm_load_sd(origin.data() + 2);
-#endif
+// A node's window: every step-th pixel of every step-th row from (x_begin, y_begin) to (x_end, y_end).
+struct Window {
+  std::ptrdiff_t x_begin, x_end, y_begin, y_end, step;
+};
+
+// Calls f(point index) for each of the window's pixels on the surface at `range`, in row order.
+template <class F>
+void for_surface_pixels(const PixelImage& image, const Window& w, double range, double depth_jump, F&& f) {
+  for (std::ptrdiff_t y = w.y_begin; y <= w.y_end; y += w.step) {
+    const double* ranges = image.range + static_cast<std::size_t>(y) * image.width;
+    const std::int32_t* points = image.point + static_cast<std::size_t>(y) * image.width;
+    for (std::ptrdiff_t x = w.x_begin; x <= w.x_end; x += w.step) {
+      if (same_surface(range, ranges[x], depth_jump)) f(static_cast<std::size_t>(points[x]));
+    }
   }
-  void add(const Point& p) {
+}
+
+// Moments::add of the window's points on the surface of the node at `origin` (`range` from the
+// sensor), two entries at a time where SSE2 is: each entry the same difference, products and sums
+// in the same order (IEEE double lanes), so the same moments. The sums are locals, not an
+// object's members, so that they stay in registers across the window.
+detail::Moments window_moments(const PointList& points, const PixelImage& image, const Window& w,
+                               const Point& origin, double range, double depth_jump) {
+  detail::Moments m;
+  m.origin = origin;
 #if defined(__SSE2__)
-    const __m128d d_xy = _mm_sub_pd(_mm_loadu_pd(p.data()), origin_xy_);  // (dx, dy)
-    const __m128d d_z = _mm_sub_sd(_mm_load_sd(p.data() + 2), origin_z_);  // (dz, 0)
-    sum_xy_ = _mm_add_pd(sum_xy_, d_xy);
-    sum_z_ = _mm_add_sd(sum_z_, d_z);
-    xx_xy_ = _mm_add_pd(xx_xy_, _mm_mul_pd(d_xy, _mm_unpacklo_pd(d_xy, d_xy)));            // (dx dx, dy dx)
-    xz_yy_ = _mm_add_pd(xz_yy_, _mm_mul_pd(_mm_shuffle_pd(d_z, d_xy, 2), d_xy));          // (dz dx, dy dy)
-    yz_zz_ = _mm_add_pd(yz_zz_, _mm_mul_pd(_mm_unpacklo_pd(d_z, d_z), _mm_shuffle_pd(d_xy, d_z, 1)));  // (dz dy, dz dz)
-    ++m_.count;
+  const Point* const point = points.data();
+  const __m128d origin_xy = _mm_loadu_pd(origin.data());
+  const __m128d origin_z = _mm_load_sd(origin.data() + 2);
+  __m128d sum_xy = _mm_setzero_pd(), sum_z = _mm_setzero_pd();
+  __m128d xx_xy = _mm_setzero_pd(), xz_yy = _mm_setzero_pd(), yz_zz = _mm_setzero_pd();
+  std::size_t count = 0;
+  for_surface_pixels(image, w, range, depth_jump, [&](std::size_t i) {
+    const __m128d d_xy = _mm_sub_pd(_mm_loadu_pd(point[i].data()), origin_xy);  // (dx, dy)
+    const __m128d d_z = _mm_sub_sd(_mm_load_sd(point[i].data() + 2), origin_z);  // (dz, 0)
+    sum_xy = _mm_add_pd(sum_xy, d_xy);
+    sum_z = _mm_add_sd(sum_z, d_z);
+    xx_xy = _mm_add_pd(xx_xy, _mm_mul_pd(d_xy, _mm_unpacklo_pd(d_xy, d_xy)));                     // (dx dx, dy dx)
+    xz_yy = _mm_add_pd(xz_yy, _mm_mul_pd(_mm_shuffle_pd(d_z, d_xy, 2), d_xy));                   // (dz dx, dy dy)
+    yz_zz = _mm_add_pd(yz_zz, _mm_mul_pd(_mm_unpacklo_pd(d_z, d_z), _mm_shuffle_pd(d_xy, d_z, 1)));  // (dz dy, dz dz)
+    ++count;
+  });
+  alignas(16) double lanes[2];
+  _mm_store_pd(lanes, sum_xy);
+  m.sum = {lanes[0], lanes[1], _mm_cvtsd_f64(sum_z)};
+  _mm_store_pd(lanes, xx_xy);
+  m.xx = lanes[0];
+  m.xy = lanes[1];
+  _mm_store_pd(lanes, xz_yy);
+  m.xz = lanes[0];
+  m.yy = lanes[1];
+  _mm_store_pd(lanes, yz_zz);
+  m.yz = lanes[0];
+  m.zz = lanes[1];
+  m.count = count;
 #else
-    m_.add(p);
+  for_surface_pixels(image, w, range, depth_jump, [&](std::size_t i) { m.add(points[i]); });
 #endif
-  }
-  const detail::Moments& moments() {
-#if defined(__SSE2__)
-    alignas(16) double lanes[2];
-    _mm_store_pd(lanes, sum_xy_);
-    m_.sum = {lanes[0], lanes[1], _mm_cvtsd_f64(sum_z_)};
-    _mm_store_pd(lanes, xx_xy_);
-    m_.xx = lanes[0];
-    m_.xy = lanes[1];
-    _mm_store_pd(lanes, xz_yy_);
-    m_.xz = lanes[0];
-    m_.yy = lanes[1];
-    _mm_store_pd(lanes, yz_zz_);
-    m_.yz = lanes[0];
-    m_.zz = lanes[1];
-#endif
-    return m_;
-  }
-
- private:
-  detail::Moments m_;
-#if defined(__SSE2__)
-  __m128d origin_xy_, origin_z_;
-  __m128d sum_xy_ = _mm_setzero_pd(), sum_z_ = _mm_setzero_pd();
-  __m128d xx_xy_ = _mm_setzero_pd(), xz_yy_ = _mm_setzero_pd(), yz_zz_ = _mm_setzero_pd();
-#endif
-};
+  return m;
+}
 
 }  // namespace
 
@@ -88,11 +100,13 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   g.viewpoint = Point::Zero();
   const std::size_t width = grid.width;
   const std::size_t height = grid.height;
+  // Per pixel its (last) point and that point's range, apart: the windows test contiguous ranges
+  // and load a point only when it is on the node's surface (see PixelImage).
   std::vector<std::int32_t> image(width * height, -1);
-  std::vector<Pixel> pixels(width * height);
+  std::vector<double> pixel_range(width * height, std::numeric_limits<double>::quiet_NaN());
   for (std::size_t i = 0; i < points.size(); ++i) {
     image[grid.pixel[i]] = static_cast<std::int32_t>(i);
-    pixels[grid.pixel[i]] = {points[i], points[i].norm()};
+    pixel_range[grid.pixel[i]] = points[i].norm();
   }
 
   const double target = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
@@ -100,33 +114,41 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
       std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(std::sqrt(points.size() / target))));
   const std::size_t cells_x = (width + stride - 1) / stride;
   const std::size_t cells_y = (height + stride - 1) / stride;
-  // Cells with a border of empty ones around them: a neighbour look-up needs no bounds test.
-  const std::size_t padded_x = cells_x + 2;
-  const auto cell_at = [&](std::size_t cx, std::size_t cy) { return (cy + 1) * padded_x + cx + 1; };
-  std::vector<std::uint32_t> cell_node(padded_x * (cells_y + 2), kNoNode);
+  // Cells with a border of empty ones around them, two normal radii wide for the creases (at
+  // most as wide as the cells reach): a neighbour look-up needs no bounds test.
+  const auto radius = static_cast<std::size_t>(std::max<std::int64_t>(1, cfg.normal_radius));
+  const std::size_t extent = std::max(cells_x, cells_y);
+  const std::size_t border = radius <= extent / 2 ? 2 * radius : extent;
+  const std::size_t padded_x = cells_x + 2 * border;
+  const auto cell_at = [&](std::size_t cx, std::size_t cy) { return (cy + border) * padded_x + cx + border; };
+  std::vector<std::uint32_t> cell_node(padded_x * (cells_y + 2 * border), kNoNode);
   std::vector<double> range;
-  std::vector<std::size_t> node_pixel;
+  std::vector<std::size_t> node_pixel, node_cell;
 
   // A cell's node is its pixel of median range: one flying pixel at a depth edge cannot be it.
-  std::vector<std::pair<double, std::int32_t>> cell_pixels;
+  std::vector<double> cell_ranges(stride * stride);
+  std::vector<std::int32_t> cell_points(stride * stride);
+  std::vector<std::pair<double, std::int32_t>> scratch;
   for (std::size_t cy = 0; cy < cells_y; ++cy) {
     const std::size_t y_end = std::min(height, (cy + 1) * stride);
     for (std::size_t cx = 0; cx < cells_x; ++cx) {
       const std::size_t x_end = std::min(width, (cx + 1) * stride);
-      cell_pixels.clear();
+      std::size_t count = 0;
       for (std::size_t y = cy * stride; y < y_end; ++y) {
         for (std::size_t x = cx * stride; x < x_end; ++x) {
           const std::int32_t i = image[y * width + x];
-          if (i >= 0) cell_pixels.emplace_back(pixels[y * width + x].range, i);
+          if (i < 0) continue;
+          cell_ranges[count] = pixel_range[y * width + x];
+          cell_points[count++] = i;
         }
       }
-      if (cell_pixels.empty()) continue;
-      std::nth_element(cell_pixels.begin(), cell_pixels.begin() + cell_pixels.size() / 2, cell_pixels.end());
-      const auto& chosen = cell_pixels[cell_pixels.size() / 2];
+      if (count == 0) continue;
+      const std::size_t chosen = detail::median_slot(cell_ranges.data(), cell_points.data(), count, scratch);
       cell_node[cell_at(cx, cy)] = static_cast<std::uint32_t>(g.nodes.size());
-      g.nodes.push_back(points[chosen.second]);
-      range.push_back(chosen.first);
-      node_pixel.push_back(grid.pixel[chosen.second]);
+      node_cell.push_back(cell_at(cx, cy));
+      g.nodes.push_back(points[cell_points[chosen]]);
+      range.push_back(cell_ranges[chosen]);
+      node_pixel.push_back(grid.pixel[cell_points[chosen]]);
     }
   }
 
@@ -153,16 +175,21 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
 
   // Every point joins the node of its cell, or of a neighbouring cell, on its side of any jump.
   g.node_of_point.assign(points.size(), kNoNode);
-  std::size_t row = 0, row_begin = 0, row_end = width;  // the pixel row of the point before
+  // Per pixel column its cell's column: no division per point.
+  std::vector<std::size_t> cell_column(width);
+  for (std::size_t x = 0; x < width; ++x) cell_column[x] = x / stride;
+  std::size_t row_begin = 0, row_end = width;  // the pixel row of the point before
+  const std::uint32_t* row_cells = cell_node.data() + cell_at(0, 0);  // its first cell
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (grid.pixel[i] < row_begin || grid.pixel[i] >= row_end) {
-      row = grid.pixel[i] / width;
+      const std::size_t row = grid.pixel[i] / width;
       row_begin = row * width;
       row_end = row_begin + width;
+      row_cells = cell_node.data() + cell_at(0, row / stride);
     }
-    const std::uint32_t* cell = cell_node.data() + cell_at((grid.pixel[i] - row_begin) / stride, row / stride);
+    const std::uint32_t* cell = row_cells + cell_column[grid.pixel[i] - row_begin];
     // (A pixel holds its last point: an earlier one at the same pixel has its own range.)
-    const double r = image[grid.pixel[i]] == static_cast<std::int32_t>(i) ? pixels[grid.pixel[i]].range : points[i].norm();
+    const double r = image[grid.pixel[i]] == static_cast<std::int32_t>(i) ? pixel_range[grid.pixel[i]] : points[i].norm();
     const auto node_at = [&](std::ptrdiff_t offset) {
       const std::uint32_t n = cell[offset];
       return n != kNoNode && same_surface(r, range[n]) ? n : kNoNode;
@@ -189,34 +216,24 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   const std::ptrdiff_t reach = static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * stride);
   // One pixel per cell is enough for a covariance, and keeps the cost per node fixed.
   const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(stride);
+  const PixelImage image_view{image.data(), pixel_range.data(), width};
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
   parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n) {
       const std::ptrdiff_t px = static_cast<std::ptrdiff_t>(node_pixel[n] % width);
       const std::ptrdiff_t py = static_cast<std::ptrdiff_t>(node_pixel[n] / width);
-      WindowMoments m(g.nodes[n]);
-      const double node_range = range[n];
-      const std::ptrdiff_t x_end = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach);
-      const std::ptrdiff_t y_end = std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach);
-      const std::ptrdiff_t x_begin = std::max<std::ptrdiff_t>(0, px - reach);
-      for (std::ptrdiff_t y = std::max<std::ptrdiff_t>(0, py - reach); y <= y_end; y += step) {
-        const Pixel* line = pixels.data() + static_cast<std::size_t>(y) * width;
-        for (std::ptrdiff_t x = x_begin; x <= x_end; x += step) {
-          if (same_surface(node_range, line[x].range)) m.add(line[x].point);
-        }
-      }
-      normal_of(m.moments(), g.normals[n], g.curvature[n]);
+      const Window w{std::max<std::ptrdiff_t>(0, px - reach),
+                     std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(width) - 1, px + reach),
+                     std::max<std::ptrdiff_t>(0, py - reach),
+                     std::min<std::ptrdiff_t>(static_cast<std::ptrdiff_t>(height) - 1, py + reach), step};
+      normal_of(window_moments(points, image_view, w, g.nodes[n], range[n], cfg.depth_jump), g.normals[n],
+                g.curvature[n]);
       if (g.normals[n].dot(*g.viewpoint - g.nodes[n]) < 0.0) g.normals[n] = -g.normals[n];
     }
   });
 
-  detail::CellLayout cells{cells_x, cells_y, std::vector<std::uint32_t>(cells_x * cells_y), {}, std::move(range)};
-  for (std::size_t cy = 0; cy < cells_y; ++cy) {
-    for (std::size_t cx = 0; cx < cells_x; ++cx) cells.node_of_cell[cy * cells_x + cx] = cell_node[cell_at(cx, cy)];
-  }
-  cells.cell_of_node.resize(g.size());
-  for (std::size_t n = 0; n < g.size(); ++n) cells.cell_of_node[n] = {node_pixel[n] % width / stride, node_pixel[n] / width / stride};
+  const detail::CellLayout cells{padded_x, border, std::move(cell_node), std::move(node_cell), std::move(range)};
   g.crease = detail::concave_creases(g, cells, cfg, pool);
   return g;
 }

@@ -12,26 +12,26 @@ std::vector<char> concave_creases(const NeighbourGraph& g, const CellLayout& cel
   if (!(cfg.crease_degrees > 0.0)) return {};
   const double crease_cos = std::cos(cfg.crease_degrees * 3.14159265358979323846 / 180.0);
   const auto r = static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius));
-  const auto cells_x = static_cast<std::ptrdiff_t>(cells.cells_x),
-             cells_y = static_cast<std::ptrdiff_t>(cells.cells_y);
+  // A border narrower than two radii: every flank node is off the cells, so no node is a centre.
+  if (static_cast<std::size_t>(r) > cells.border / 2) return std::vector<char>(g.size(), 0);
   constexpr int kDirections[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+  std::ptrdiff_t offsets[4];
+  const auto padded_x = static_cast<std::ptrdiff_t>(cells.padded_x);
+  for (int k = 0; k < 4; ++k) offsets[k] = kDirections[k][1] * padded_x + kDirections[k][0];
   const auto angle = [&](std::uint32_t a, std::uint32_t b) {
     return std::acos(std::clamp(g.normals[a].dot(g.normals[b]), -1.0, 1.0));
   };
   std::vector<char> centre(g.size(), 0);
   parallel::for_blocks(pool, g.size(), kNodesPerBlock, [&](std::size_t begin, std::size_t end) {
     for (std::size_t n = begin; n < end; ++n) {
-      const auto cx = static_cast<std::ptrdiff_t>(cells.cell_of_node[n][0]);
-      const auto cy = static_cast<std::ptrdiff_t>(cells.cell_of_node[n][1]);
+      const std::uint32_t* cell = cells.node_of_cell.data() + cells.cell_of_node[n];
       const double range = cells.range[n];
-      // The node k cells along d, if there is one on this node's surface.
-      const auto node_at = [&](std::ptrdiff_t k, const int* d) {
-        const std::ptrdiff_t x = cx + k * d[0], y = cy + k * d[1];
-        if (x < 0 || y < 0 || x >= cells_x || y >= cells_y) return kNoNode;
-        const std::uint32_t m = cells.node_of_cell[static_cast<std::size_t>(y * cells_x + x)];
+      // The node k cells along a direction (offset o), if there is one on this node's surface.
+      const auto node_at = [&](std::ptrdiff_t k, std::ptrdiff_t o) {
+        const std::uint32_t m = cell[k * o];
         return m != kNoNode && same_surface(range, cells.range[m], cfg.depth_jump) ? m : kNoNode;
       };
-      for (const auto& d : kDirections) {
+      for (const std::ptrdiff_t d : offsets) {
         const std::uint32_t p = node_at(-r, d), q = node_at(r, d);
         if (p == kNoNode || q == kNoNode) continue;
         if (!(g.normals[p].dot(g.normals[q]) < crease_cos &&

@@ -2,7 +2,6 @@
 // towards the sensor, which normals blurred over their windows and a curvature test do not show.
 #pragma once
 
-#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -12,12 +11,14 @@
 
 namespace cloudshape::segment::detail {
 
-// The graph's pixel cells: cells_x by cells_y of them, row-major node_of_cell (kNoNode: none),
-// and per node its cell and its range (distance from the sensor).
+// The graph's pixel cells inside a border of `border` empty ones on every side: node_of_cell
+// row-major over rows of padded_x (kNoNode: none), and per node its index there and its range
+// (distance from the sensor). A border of two normal radii lets the creases look without bounds
+// tests; one narrower than that is as wide as the cells reach, and no look that far finds a node.
 struct CellLayout {
-  std::size_t cells_x = 0, cells_y = 0;
+  std::size_t padded_x = 0, border = 0;
   std::vector<std::uint32_t> node_of_cell;
-  std::vector<std::array<std::size_t, 2>> cell_of_node;
+  std::vector<std::size_t> cell_of_node;
   std::vector<double> range;
 };
 
