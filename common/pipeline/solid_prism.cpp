@@ -165,36 +165,53 @@ std::optional<std::size_t> run_along(const std::vector<SideRun>& runs, const Eig
   return best;
 }
 
+// A cap's outline as its own points and border give it, before any side seen is matched: the
+// same for every axis hypothesis that projects the same cap the same way, so each is fitted once
+// per solid (the axis hypotheses of a box's view often share a cap and its frame).
+struct CapOutline {
+  std::vector<Eigen::Vector2d> points, border;  // the cap's projections: the key
+  std::vector<detail::OutlineSide> sides;       // fit_outline_sides of its traced outline; < 3: none
+};
+using CapOutlines = std::vector<CapOutline>;
+
 // The outline from a cap (a single view shows one whole: nothing of a right prism stands above
 // its cap): the cap's traced outline gives the sides roughly; their lines are refitted to the
 // cap's border and the bends its raggedness makes are joined (fit_outline_sides), then each side
 // a face is seen along takes that face's line and the rest are fitted again around them.
 std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const DetectedPlane& cap,
                                                   const Eigen::Vector3d& u, const Eigen::Vector3d& v,
-                                                  const std::vector<SideRun>& runs, std::size_t& matched) {
+                                                  const std::vector<SideRun>& runs, std::size_t& matched,
+                                                  CapOutlines& outlines) {
   std::vector<Eigen::Vector2d> pts, border;
   for (std::uint32_t i : cap.inliers) pts.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
   for (std::uint32_t i : cap.boundary) border.emplace_back(in.cloud[i].dot(u), in.cloud[i].dot(v));
   const double cell = in.cfg.prism_outline_cell * in.resolution;
-  const geometry::Polygon2 rough = detail::face_outline_polygon(pts, cell, 1.5 * cell);
   matched = 0;
-  if (rough.size() < 3) return std::nullopt;
   detail::OutlineFitParameters fit;
   fit.cell = cell;
   fit.band_cells = in.cfg.prism_border_band_cells;
   fit.min_length_cells = in.cfg.prism_corner_cut_cells;
   fit.join_evidence = in.cfg.prism_join_evidence;
-  std::vector<detail::OutlineSide> sides;
-  for (std::size_t k = 0; k < rough.size(); ++k) {
-    const Eigen::Vector2d a = rough[k], b = rough[(k + 1) % rough.size()];
-    const Eigen::Vector2d dir = (b - a).normalized();
-    detail::OutlineSide s;
-    s.n = Eigen::Vector2d(dir.y(), -dir.x());
-    s.d = s.n.dot(a);
-    sides.push_back(std::move(s));
+  std::size_t known = 0;
+  while (known < outlines.size() && !(outlines[known].points == pts && outlines[known].border == border)) ++known;
+  if (known == outlines.size()) {
+    CapOutline fresh{pts, border, {}};
+    const geometry::Polygon2 rough = detail::face_outline_polygon(pts, cell, 1.5 * cell);
+    if (rough.size() >= 3) {
+      for (std::size_t k = 0; k < rough.size(); ++k) {
+        const Eigen::Vector2d a = rough[k], b = rough[(k + 1) % rough.size()];
+        const Eigen::Vector2d dir = (b - a).normalized();
+        detail::OutlineSide s;
+        s.n = Eigen::Vector2d(dir.y(), -dir.x());
+        s.d = s.n.dot(a);
+        fresh.sides.push_back(std::move(s));
+      }
+      fresh.sides = detail::fit_outline_sides(std::move(fresh.sides), border, fit);
+    }
+    outlines.push_back(std::move(fresh));
   }
-  sides = detail::fit_outline_sides(std::move(sides), border, fit);
-  if (sides.size() < 3) return std::nullopt;
+  if (outlines[known].sides.size() < 3) return std::nullopt;
+  std::vector<detail::OutlineSide> sides = outlines[known].sides;
 
   const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
   for (std::size_t k = 0; k < sides.size(); ++k) {
@@ -260,7 +277,8 @@ std::optional<std::vector<SideRun>> ring_from_cap(const SolveInput& in, const De
 
 // The prism along one axis hypothesis, or nothing when its outline or faces are no prism's.
 // `closed`: set when the sides' own stretches closed an outline.
-std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoice& choice, bool& closed) {
+std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoice& choice, bool& closed,
+                                           CapOutlines& outlines) {
   const Eigen::Vector3d axis = detail::extrusion_axis(choice.sides, choice.caps, choice.axis);
   const Eigen::Matrix3d frame = detail::frame_from_axis(axis);
   const Eigen::Vector3d u = frame.row(1).transpose(), v = frame.row(2).transpose();
@@ -288,7 +306,7 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
       cap.inliers.insert(cap.inliers.end(), piece.inliers.begin(), piece.inliers.end());
       cap.boundary.insert(cap.boundary.end(), piece.boundary.begin(), piece.boundary.end());
     }
-    chained = ring_from_cap(in, cap, u, v, runs, matched);
+    chained = ring_from_cap(in, cap, u, v, runs, matched, outlines);
     if (matched == 0) return std::nullopt;
     from_cap = true;
   }
@@ -409,9 +427,10 @@ std::optional<FittedSolid> fit_prism(const SolveInput& in) {
   // Where the sides around some axis closed an outline, they told the cross-section: a cap's
   // reading of three sides or more is only for sides that close none.
   bool closed = false;
+  CapOutlines outlines;
   for (const AxisChoice& choice : choose_axes(in, faces)) {
     if (choice.cap_reading && closed) continue;
-    if (auto solid = fit_prism_along(in, choice, closed)) return solid;
+    if (auto solid = fit_prism_along(in, choice, closed, outlines)) return solid;
   }
   return std::nullopt;
 }
