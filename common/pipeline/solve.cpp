@@ -102,21 +102,18 @@ bool traces_an_arc(const PointList& cloud, const DetectedPlane& face, double max
   const auto circle = geometry::fit_circle_in_plane(cloud, face.inliers, origin, n);
   if (!circle || !(circle->radius > 0.0) || !std::isfinite(circle->radius)) return false;
   const Eigen::Vector3d u = n.unitOrthogonal(), v = n.cross(u);
+  const Eigen::Vector2d c(circle->center.dot(u), circle->center.dot(v));
   double sum_sq = 0.0;
-  std::vector<Eigen::Vector2d> flat;
-  flat.reserve(face.inliers.size());
+  std::vector<double> angle;  // each point's about the centre, in the plane
+  angle.reserve(face.inliers.size());
   for (std::uint32_t i : face.inliers) {
     const Eigen::Vector3d d = cloud[i] - circle->center;
-    const Eigen::Vector3d in_plane = d - d.dot(n) * n;
-    sum_sq += (in_plane.norm() - circle->radius) * (in_plane.norm() - circle->radius);
-    flat.emplace_back(cloud[i].dot(u), cloud[i].dot(v));
+    const double off = (d - d.dot(n) * n).norm() - circle->radius;
+    sum_sq += off * off;
+    angle.push_back(std::atan2(cloud[i].dot(v) - c.y(), cloud[i].dot(u) - c.x()));
   }
   if (std::sqrt(sum_sq / static_cast<double>(face.inliers.size())) > max_scatter) return false;
   // The arc's span: the circle less the widest gap between the points' angles about its centre.
-  std::vector<double> angle;
-  angle.reserve(flat.size());
-  const Eigen::Vector2d c(circle->center.dot(u), circle->center.dot(v));
-  for (const Eigen::Vector2d& q : flat) angle.push_back(std::atan2(q.y() - c.y(), q.x() - c.x()));
   constexpr double kTwoPi = 6.283185307179586;
   const double span = kTwoPi - geometry::widest_angular_gap(angle), r = circle->radius;
   // Over half a turn the arc bows its whole radius off the chord across its widest part.
@@ -126,7 +123,8 @@ bool traces_an_arc(const PointList& cloud, const DetectedPlane& face, double max
 
 // Share of the points off the solid's caps (true faces with their normal along its axis; a
 // sphere has none) that lie on true flat faces their points fill (hull_fill of at least
-// `min_fill`; a plane whose points trace an arc, traces_an_arc, is none: its fill is held as -1); `fills` holds each plane's, NaN until first needed: the same for every candidate
+// `min_fill`; a plane whose points trace an arc, traces_an_arc, is none: its fill is held as -1;
+// `fills` holds each plane's, NaN until first needed: the same for every candidate
 // solid, so computed once per object): a curved side is no face, so a cloud that is flat faces
 // all round (an octahedron, whose corners ring some axis; a tetrahedron seen about a corner) is
 // none. Only faces holding `large_share` of the points count for a cone or frustum: its side

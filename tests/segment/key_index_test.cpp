@@ -51,8 +51,7 @@ TEST(CellValues, KeepsTheFirstValueOfAKeyAndTheirOrder) {
   EXPECT_EQ(*cells.find(kAllOnes), -0.5);
   EXPECT_EQ(cells.find(7), nullptr);
   EXPECT_EQ(cells.values(), (std::vector<double>{-0.5, 1.25}));
-  EXPECT_EQ(cells.size(), 2u);
-}
+  }
 
 }  // namespace
 }  // namespace cloudshape::segment::detail

@@ -50,7 +50,6 @@ class CellValues {
     return i == KeyIndex::kAbsent ? nullptr : &values_[i];
   }
   bool empty() const { return values_.empty(); }
-  std::size_t size() const { return values_.size(); }
   // In order of arrival.
   const std::vector<double>& values() const { return values_; }
 
