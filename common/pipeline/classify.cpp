@@ -161,18 +161,18 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
     if (p.is_face) on_faces += p.inliers.size();
   out.face_fraction = static_cast<double>(on_faces) / static_cast<double>(cloud.size());
 
-  // Sphere test (thesis 3.3.4), on a geometric fit rather than the centroid distance so
-  // that a partial sphere passes too.
-  std::vector<std::uint32_t> sample;
-  const std::size_t step = std::max<std::size_t>(1, cloud.size() / 3000);
-  for (std::size_t i = 0; i < cloud.size(); i += step) sample.push_back(static_cast<std::uint32_t>(i));
-  if (const auto sphere = geometry::fit_sphere(cloud, sample)) {
-    out.sphere_test = sphere->rms < cfg.sphere_max_rms * sphere->radius &&
-                      out.face_fraction <= cfg.sphere_max_face_fraction;
-  }
   read_outlines(cloud, planes, cfg, out);
-  // A sphere has no flat face.
-  if (out.cap_plane || out.rectangular_face) out.sphere_test = false;
+  // Sphere test (thesis 3.3.4), on a geometric fit rather than the centroid distance so
+  // that a partial sphere passes too. A sphere has no flat face: with too many points on
+  // faces, or a circular or rectangular one, the test fails whatever the fit (not made).
+  if (out.face_fraction <= cfg.sphere_max_face_fraction && !out.cap_plane && !out.rectangular_face) {
+    std::vector<std::uint32_t> sample;
+    const std::size_t step = std::max<std::size_t>(1, cloud.size() / 3000);
+    for (std::size_t i = 0; i < cloud.size(); i += step) sample.push_back(static_cast<std::uint32_t>(i));
+    if (const auto sphere = geometry::fit_sphere(cloud, sample)) {
+      out.sphere_test = sphere->rms < cfg.sphere_max_rms * sphere->radius;
+    }
+  }
   out.shape = out.sphere_test ? Shape::sphere : shape_from_keypoints(out.counts);
   if (out.cap_plane) {
     // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
