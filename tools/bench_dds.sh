@@ -19,6 +19,9 @@
 # the clouds lost, latency median / p99, and "sustained": every cloud delivered, delivered rate
 # within 3% of the target, and no queue: median latency at most one period above the median of
 # 10 clouds sent first at 1 cloud/s (the unloaded latency), p99 at most 3 x that median.
+# The rates mode ends with each service's CPU time (user + system) per cloud over the rates: the
+# stages share the host's cores, so their sum bounds the rate it can sustain (inject and echo,
+# the sensor's and the consumer's side, not counted).
 # Needs a build (build/bin).
 set -euo pipefail
 # shellcheck disable=SC2034  # read by lib/deps.sh
@@ -93,6 +96,16 @@ wait_for_results() {  # wait_for_results FIRST_ID N: until all came, or 30 s wit
 # One echo for the whole run.
 cs_start_pipeline "$domain" "$work/results.jsonl" "$work/latency.txt" --timeout 7200 --latency
 next_id=0
+# cpu_per_cloud FIRST_ID: each service's CPU ms per cloud since cpu_start.txt was read (when cloud
+# FIRST_ID was next), and their sum.
+cpu_per_cloud() {
+  (($1 < next_id)) || return 0
+  cs_service_cpu | awk -v n="$((next_id - $1))" -v cores="$(nproc)" '
+    FNR == NR { start[$1] = $2; next }
+    { ms = ($2 - start[$1]) / n; total += ms; line = line sprintf("%s %.1f, ", $1, ms) }
+    END { printf "\nCPU per cloud (user + system, ms, %d clouds): %stotal %.1f; %d cores give %.0f ms a second, so at most %.0f clouds/s whatever the transport.\n",
+                 n, line, total, cores, 1000 * cores, (total > 0 ? 1000 * cores / total : 0) }' "$work/cpu_start.txt" -
+}
 
 if [[ -z "$rates" ]]; then
   read -r -a size_list <<<"$sizes"
@@ -129,6 +142,8 @@ printf 'DDS inject->echo latency at 1 cloud/s: median %.1f ms.\n\n' "$unloaded"
 printf '| target rate (clouds/s) | sent (clouds/s) | delivered (clouds/s) | lost | latency median (ms) | p99 (ms) | sustained |\n'
 printf '|---:|---:|---:|---:|---:|---:|---|\n'
 read -r -a rate_list <<<"$rates"
+cs_service_cpu >"$work/cpu_start.txt"
+first_rate_id=$next_id
 best=none
 failed=0
 for rate in "${rate_list[@]}"; do
@@ -148,3 +163,4 @@ for rate in "${rate_list[@]}"; do
   next_id=$((next_id + clouds))
 done
 printf '\nEvery rate up to %s clouds/s (of those tried, in order) sustained at %s points.\n' "$best" "$points"
+cpu_per_cloud "$first_rate_id"
