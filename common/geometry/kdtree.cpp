@@ -1,5 +1,6 @@
 #include "geometry/kdtree.hpp"
 
+#include <limits>
 #include <nanoflann.hpp>
 
 namespace cloudshape::geometry {
@@ -56,6 +57,30 @@ class AnyRadiusSet {
   bool found_ = false;
 };
 
+// nanoflann's KNNResultSet for k = 2 holding only its two distances: the same worst distance after
+// every point, so the same search and the same second distance.
+class TwoNearestSet {
+ public:
+  std::size_t size() const { return count_; }
+  bool full() const { return count_ == 2; }
+  bool addPoint(double dist, std::uint32_t) {
+    if (dist < first_) {
+      second_ = first_;
+      first_ = dist;
+    } else if (dist < second_) {
+      second_ = dist;
+    }
+    count_ += count_ < 2 ? 1 : 0;
+    return true;
+  }
+  double worstDist() const { return second_; }
+
+ private:
+  double first_ = std::numeric_limits<double>::max();
+  double second_ = std::numeric_limits<double>::max();
+  std::size_t count_ = 0;
+};
+
 }  // namespace
 
 struct KdTree::Index {
@@ -85,6 +110,12 @@ void KdTree::knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& 
   const std::size_t found = index_->tree.knnSearch(query.data(), k, indices.data(), d.data());
   indices.resize(found);
   d.resize(found);
+}
+
+double KdTree::nearest_other_sq_dist(std::uint32_t i) const {
+  TwoNearestSet found;
+  index_->tree.findNeighbors(found, points_[i].data(), nanoflann::SearchParams());
+  return found.worstDist();
 }
 
 void KdTree::radius(const Point& query, double radius, std::vector<std::uint32_t>& indices) const {

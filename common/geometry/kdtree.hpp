@@ -24,6 +24,11 @@ class KdTree {
   void knn(const Point& query, std::size_t k, std::vector<std::uint32_t>& indices,
            std::vector<double>* sq_dists = nullptr) const;
 
+  // The squared distance from points()[i] to its nearest other point (0 beside a duplicate; the
+  // tree holds two points or more): the second distance knn(points()[i], 2) gives, by the same
+  // search, without its vectors.
+  double nearest_other_sq_dist(std::uint32_t i) const;
+
   // Indices of all points within `radius` of `query`, in no particular order.
   void radius(const Point& query, double radius, std::vector<std::uint32_t>& indices) const;
 

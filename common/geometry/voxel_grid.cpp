@@ -1,6 +1,7 @@
 #include "geometry/voxel_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/detail/flat_hash.hpp"
@@ -12,47 +13,82 @@ namespace {
 
 constexpr std::size_t kGridFrom = 50000;
 
+// 21 bits per axis (one voxel of margin each side for the neighbour test). A denormal voxel
+// (inv = inf) or coordinates whose differences overflow give no grid (found by fuzz_ingest:
+// 0 * inf = NaN would be cast to an integer below).
+bool grid_fits(const Bounds& b, double inv) {
+  const Eigen::Vector3d extent = (b.max - b.min) * inv;
+  return std::isfinite(inv) && extent.allFinite() && extent.maxCoeff() < double((1 << 21) - 3);
+}
+
+// A voxel's coordinates, floor((p - b.min) * inv) on each axis: in [0, 2^21 - 3) once grid_fits
+// (p lies in b), where converting to a signed integer gives what the unsigned keys took, in fewer
+// instructions.
+struct VoxelOf {
+  Point min;
+  double inv;
+  std::array<std::int64_t, 3> operator()(const Point& p) const {
+    const Eigen::Vector3d q = (p - min) * inv;
+    return {static_cast<std::int64_t>(q.x()), static_cast<std::int64_t>(q.y()), static_cast<std::int64_t>(q.z())};
+  }
+};
+
+// The voxels along each axis, with `margin` more either side, when a dense array over all of
+// them has at most `max_cells` entries (then an array indexed by cell replaces the hash map, the
+// same voxels found in the same order); empty otherwise.
+std::array<std::uint64_t, 3> dense_dims(const Bounds& b, double inv, std::uint64_t margin, double max_cells) {
+  const Eigen::Vector3d extent = (b.max - b.min) * inv;
+  std::array<std::uint64_t, 3> dims{};
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    dims[a] = static_cast<std::uint64_t>(extent[a]) + 1 + 2 * margin;
+    cells *= static_cast<double>(dims[a]);
+  }
+  if (!(cells <= max_cells)) dims = {};
+  return dims;
+}
+
 }  // namespace
 
-Bounds bounding_box(const PointList& points) {
+Bounds bounding_box(const PointList& points, std::size_t stride) {
   Bounds b;
   if (points.empty()) return b;
-  b.min = b.max = points.front();
-  for (const Point& p : points) {
-    b.min = b.min.cwiseMin(p);
-    b.max = b.max.cwiseMax(p);
+  // x and y as one packet, z alone: what cwiseMin and cwiseMax of whole points give (std::min's
+  // operand order both ways, signed zeros included), without Eigen's unaligned tail per point.
+  Eigen::Vector2d lo_xy = points.front().head<2>(), hi_xy = lo_xy;
+  double lo_z = points.front().z(), hi_z = lo_z;
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    const Point& p = points[i];
+    lo_xy = lo_xy.cwiseMin(p.head<2>());
+    hi_xy = hi_xy.cwiseMax(p.head<2>());
+    lo_z = std::min(lo_z, p.z());
+    hi_z = std::max(hi_z, p.z());
   }
+  b.min = Point(lo_xy.x(), lo_xy.y(), lo_z);
+  b.max = Point(hi_xy.x(), hi_xy.y(), hi_z);
   return b;
 }
 
-PointList voxel_grid_downsample(const PointList& points, double voxel_size,
-                                int min_occupied_neighbours, std::size_t* isolated, const Bounds* bounds) {
-  if (isolated) *isolated = 0;
-  if (!(voxel_size > 0.0) || points.empty()) return points;
-  const Bounds b = bounds ? *bounds : bounding_box(points);
-  const double inv = 1.0 / voxel_size;
-  // 21 bits per axis (one voxel of margin each side for the neighbour test). A denormal voxel
-  // (inv = inf) or coordinates whose differences overflow give no grid (found by fuzz_ingest:
-  // 0 * inf = NaN would be cast to an integer below).
-  const Eigen::Vector3d extent = (b.max - b.min) * inv;
-  if (!std::isfinite(inv) || !extent.allFinite() || !(extent.maxCoeff() < double((1 << 21) - 3))) return points;
-  auto key_of = [](std::uint64_t ix, std::uint64_t iy, std::uint64_t iz) {
-    return (ix << 42) | (iy << 21) | iz;
-  };
+namespace {
 
-  struct Acc {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    std::uint32_t count = 0;
-    std::uint64_t key = 0;
-  };
+struct VoxelSum {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  std::uint32_t count = 0;
+  std::uint64_t key = 0;
+};
+
+// The voxels of `points` in the order their first point comes, each with its sum, count and
+// key; `lonely` marks those with fewer than `min_occupied_neighbours` occupied among their 26
+// neighbours (only whether that many are reached matters: the search stops there). The hash map.
+std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& voxel_of, int min_occupied_neighbours,
+                                        std::vector<char>& lonely) {
+  auto key_of = [](std::uint64_t ix, std::uint64_t iy, std::uint64_t iz) { return (ix << 42) | (iy << 21) | iz; };
   detail::CellMap slot(points.size() / 4 + 16);
-  std::vector<Acc> acc;
+  std::vector<VoxelSum> acc;
   acc.reserve(points.size() / 4 + 16);
   for (const Point& p : points) {
-    const Eigen::Vector3d q = (p - b.min) * inv;
-    const std::uint64_t key = key_of(static_cast<std::uint64_t>(q.x()) + 1,
-                                     static_cast<std::uint64_t>(q.y()) + 1,
-                                     static_cast<std::uint64_t>(q.z()) + 1);
+    const auto c = voxel_of(p);
+    const std::uint64_t key = key_of(c[0] + 1, c[1] + 1, c[2] + 1);
     bool inserted = false;
     const std::uint32_t s = slot.find_or_insert(key, static_cast<std::uint32_t>(acc.size()), inserted);
     if (inserted) {
@@ -63,27 +99,83 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
     ++acc[s].count;
   }
   constexpr std::uint64_t kMask = (1u << 21) - 1;
-  std::vector<char> lonely(acc.size(), 0);
-  std::size_t lonely_count = 0;
-  if (min_occupied_neighbours > 0) {
-    for (std::size_t v = 0; v < acc.size(); ++v) {
-      const std::uint64_t key = acc[v].key;
-      const std::uint64_t ix = key >> 42, iy = (key >> 21) & kMask, iz = key & kMask;
-      // Only whether `min_occupied_neighbours` are reached matters: the search stops there.
-      int occupied = 0;
-      for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
-        for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
-          for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
-            if ((dx || dy || dz) &&
-                slot.find(key_of(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
-              ++occupied;
-      lonely[v] = occupied < min_occupied_neighbours;
-      lonely_count += lonely[v];
-    }
-    // Many lonely voxels mean the grid is finer than the cloud's own sampling, not that
-    // the cloud is full of outliers: then nothing is dropped.
-    if (lonely_count * 4 > acc.size()) std::fill(lonely.begin(), lonely.end(), 0), lonely_count = 0;
+  lonely.assign(acc.size(), 0);
+  if (min_occupied_neighbours <= 0) return acc;
+  for (std::size_t v = 0; v < acc.size(); ++v) {
+    const std::uint64_t key = acc[v].key;
+    const std::uint64_t ix = key >> 42, iy = (key >> 21) & kMask, iz = key & kMask;
+    int occupied = 0;
+    for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
+      for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
+        for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
+          if ((dx || dy || dz) && slot.find(key_of(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
+            ++occupied;
+    lonely[v] = occupied < min_occupied_neighbours;
   }
+  return acc;
+}
+
+// The same over a dense array of `dims` cells (one of margin either side), `key` the cell's index.
+std::vector<VoxelSum> sum_voxels_in_array(const PointList& points, const VoxelOf& voxel_of,
+                                          const std::array<std::uint64_t, 3>& dims, int min_occupied_neighbours,
+                                          std::vector<char>& lonely) {
+  const std::uint64_t ny = dims[1], nz = dims[2];
+  std::vector<std::uint32_t> slot(dims[0] * ny * nz, detail::CellMap::kAbsent);
+  std::vector<VoxelSum> acc;
+  acc.reserve(points.size() / 4 + 16);
+  for (const Point& p : points) {
+    const auto c = voxel_of(p);
+    const std::uint64_t cell = ((static_cast<std::uint64_t>(c[0]) + 1) * ny + static_cast<std::uint64_t>(c[1]) + 1) * nz +
+                               static_cast<std::uint64_t>(c[2]) + 1;
+    std::uint32_t& s = slot[cell];
+    if (s == detail::CellMap::kAbsent) {
+      s = static_cast<std::uint32_t>(acc.size());
+      acc.emplace_back();
+      acc.back().key = cell;
+    }
+    VoxelSum& v = acc[s];
+    v.sum += p;
+    ++v.count;
+  }
+  lonely.assign(acc.size(), 0);
+  if (min_occupied_neighbours <= 0) return acc;
+  const std::int64_t step[3] = {static_cast<std::int64_t>(ny * nz), static_cast<std::int64_t>(nz), 1};
+  for (std::size_t v = 0; v < acc.size(); ++v) {
+    const std::int64_t cell = static_cast<std::int64_t>(acc[v].key);
+    int occupied = 0;
+    for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
+      for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
+        for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
+          if ((dx || dy || dz) &&
+              slot[static_cast<std::size_t>(cell + dx * step[0] + dy * step[1] + dz * step[2])] != detail::CellMap::kAbsent)
+            ++occupied;
+    lonely[v] = occupied < min_occupied_neighbours;
+  }
+  return acc;
+}
+
+}  // namespace
+
+PointList voxel_grid_downsample(const PointList& points, double voxel_size,
+                                int min_occupied_neighbours, std::size_t* isolated, const Bounds* bounds) {
+  if (isolated) *isolated = 0;
+  if (!(voxel_size > 0.0) || points.empty()) return points;
+  const Bounds b = bounds ? *bounds : bounding_box(points);
+  const double inv = 1.0 / voxel_size;
+  if (!grid_fits(b, inv)) return points;
+  const VoxelOf voxel_of{b.min, inv};
+  // An array of at most two cells a point (8 bytes) takes about the map's memory (6 to 12 bytes a
+  // point) and no hashing.
+  const auto dims = dense_dims(b, inv, 1, 2.0 * static_cast<double>(points.size()));
+  std::vector<char> lonely;
+  const std::vector<VoxelSum> acc =
+      dims[0] > 0 ? sum_voxels_in_array(points, voxel_of, dims, min_occupied_neighbours, lonely)
+                  : sum_voxels_in_map(points, voxel_of, min_occupied_neighbours, lonely);
+  std::size_t lonely_count = 0;
+  for (char l : lonely) lonely_count += static_cast<std::size_t>(l);
+  // Many lonely voxels mean the grid is finer than the cloud's own sampling, not that
+  // the cloud is full of outliers: then nothing is dropped.
+  if (lonely_count * 4 > acc.size()) std::fill(lonely.begin(), lonely.end(), 0), lonely_count = 0;
   if (isolated) *isolated = lonely_count;
   PointList out;
   out.reserve(acc.size() - lonely_count);
@@ -92,23 +184,42 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   return out;
 }
 
-std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds) {
-  if (!(voxel_size > 0.0) || points.empty()) return points.size();
-  const Bounds b = bounds ? *bounds : bounding_box(points);
+std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds,
+                                  std::size_t stride) {
+  const std::size_t n = points.empty() ? 0 : (points.size() - 1) / stride + 1;
+  if (!(voxel_size > 0.0) || points.empty()) return n;
+  const Bounds b = bounds ? *bounds : bounding_box(points, stride);
   const double inv = 1.0 / voxel_size;
   // The same keys and the same validity as voxel_grid_downsample's.
-  const Eigen::Vector3d extent = (b.max - b.min) * inv;
-  if (!std::isfinite(inv) || !extent.allFinite() || !(extent.maxCoeff() < double((1 << 21) - 3))) return points.size();
+  if (!grid_fits(b, inv)) return n;
+  const VoxelOf voxel_of{b.min, inv};
+  // A bit per voxel while that is at most 8 bytes a point (a map takes 24 or more).
+  const auto dims = dense_dims(b, inv, 0, 64.0 * static_cast<double>(n));
+  std::uint64_t occupied = 0;
+  if (dims[0] > 0) {
+    const std::uint64_t cells = dims[0] * dims[1] * dims[2];
+    std::vector<std::uint64_t> bits((cells + 63) / 64, 0);
+    for (std::size_t i = 0; i < points.size(); i += stride) {
+      const auto c = voxel_of(points[i]);
+      const std::uint64_t cell =
+          (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) * dims[2] +
+          static_cast<std::uint64_t>(c[2]);
+      std::uint64_t& word = bits[cell >> 6];
+      const std::uint64_t bit = std::uint64_t{1} << (cell & 63);
+      occupied += (word & bit) == 0 ? 1 : 0;
+      word |= bit;
+    }
+    return occupied;
+  }
   // Room for a voxel per point: the finest voxel of a search often holds one or two points, and
   // a map that grows rehashes every key it has.
-  detail::CellMap slot(points.size() + 16);
-  std::uint32_t occupied = 0;
-  for (const Point& p : points) {
-    const Eigen::Vector3d q = (p - b.min) * inv;
-    const std::uint64_t key = ((static_cast<std::uint64_t>(q.x()) + 1) << 42) |
-                              ((static_cast<std::uint64_t>(q.y()) + 1) << 21) | (static_cast<std::uint64_t>(q.z()) + 1);
+  detail::CellMap slot(n + 16);
+  for (std::size_t i = 0; i < points.size(); i += stride) {
+    const auto c = voxel_of(points[i]);
+    const std::uint64_t key = (static_cast<std::uint64_t>(c[0]) << 42) | (static_cast<std::uint64_t>(c[1]) << 21) |
+                              static_cast<std::uint64_t>(c[2]);
     bool inserted = false;
-    slot.find_or_insert(key, occupied, inserted);
+    slot.find_or_insert(key, static_cast<std::uint32_t>(occupied), inserted);
     occupied += inserted ? 1 : 0;
   }
   return occupied;
@@ -132,12 +243,7 @@ double mean_over_grid(const PointList& points, const std::vector<std::uint32_t>&
 
 double mean_over_tree(const KdTree& tree, const std::vector<std::uint32_t>& sample) {
   double sum = 0.0;
-  std::vector<std::uint32_t> idx;
-  std::vector<double> d2;
-  for (std::uint32_t i : sample) {
-    tree.knn(tree.points()[i], 2, idx, &d2);
-    sum += std::sqrt(d2[1]);
-  }
+  for (std::uint32_t i : sample) sum += std::sqrt(tree.nearest_other_sq_dist(i));
   return sum / static_cast<double>(sample.size());
 }
 

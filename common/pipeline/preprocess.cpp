@@ -64,13 +64,10 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   // a sparse subsample (it can only occupy fewer voxels than the whole cloud), so the
   // whole cloud is usually gridded once.
   if (cfg.max_points > 0 && raw.size() > budget) {
-    PointList sparse;
     const std::size_t stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
-    sparse.reserve((raw.size() + stride - 1) / stride);
-    for (std::size_t i = 0; i < raw.size(); i += stride) sparse.push_back(raw[i]);
-    const geometry::Bounds sparse_bounds = geometry::bounding_box(sparse);
+    const geometry::Bounds sparse_bounds = geometry::bounding_box(raw, stride);
     for (int attempt = 0; attempt < 4; ++attempt) {
-      const std::size_t n = geometry::count_occupied_voxels(sparse, voxel, &sparse_bounds);
+      const std::size_t n = geometry::count_occupied_voxels(raw, voxel, &sparse_bounds, stride);
       if (n <= budget) break;
       voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
               std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;

@@ -30,29 +30,32 @@ ElevationBins::ElevationBins(double bin_degrees) : bin_degrees_(bin_degrees) {
   // poles, where the edges crowd in sine.
   first_edge_.resize(2 * edges_.size());
   cells_per_unit_ = static_cast<double>(first_edge_.size()) / 2.0;
+  max_cell_ = static_cast<double>(first_edge_.size() - 1);
+  // The first edge above each cell's start (std::upper_bound's), swept: the starts rise with c.
+  std::size_t above = 0;
   for (std::size_t c = 0; c < first_edge_.size(); ++c) {
     const double start = -1.0 + static_cast<double>(c) / cells_per_unit_;
-    const auto above = std::upper_bound(edges_.begin(), edges_.end(), start);
-    first_edge_[c] = static_cast<std::uint32_t>(above == edges_.begin() ? 0 : above - edges_.begin() - 1);
+    while (above < edges_.size() && !(start < edges_[above])) ++above;
+    first_edge_[c] = static_cast<std::uint32_t>(above == 0 ? 0 : above - 1);
   }
 }
 
-std::optional<std::int64_t> ElevationBins::operator()(const Point& p) const {
-  if (edges_.empty()) return elevation_bin(p, bin_degrees_);
-  // s = sin(elevation), off by a few roundings (1e-15) while the squares neither over- nor
-  // underflow; atan2's bin is off by as little. So a sine farther than kEdgeMargin from every
-  // edge's lies in atan2's bin (|d sin| <= |d angle|: the margin in angle is larger still).
-  const double r2 = p.x() * p.x() + p.y() * p.y() + p.z() * p.z();
-  if (!(r2 >= 1e-280 && r2 <= 1e280)) return elevation_bin(p, bin_degrees_);
-  const double s = p.z() / std::sqrt(r2);
-  const double cell = std::clamp((s + 1.0) * cells_per_unit_, 0.0, static_cast<double>(first_edge_.size() - 1));
-  std::size_t e = first_edge_[static_cast<std::size_t>(cell)];
-  while (e > 0 && edges_[e] > s) --e;
-  while (e + 1 < edges_.size() && edges_[e + 1] <= s) ++e;
-  if (e + 1 >= edges_.size() || !(s - edges_[e] > kEdgeMargin) || !(edges_[e + 1] - s > kEdgeMargin)) {
-    return elevation_bin(p, bin_degrees_);
+std::size_t ElevationBins::count_bins(const Point* first, const Point* last, std::size_t* dense) const {
+  const Table table{edges_.data(), edges_.size(), first_edge_.data(), cells_per_unit_, max_cell_};
+  const std::int64_t lowest = lowest_;
+  const double bin_degrees = bin_degrees_;
+  std::size_t used = 0;
+  for (const Point* p = first; p != last; ++p) {
+    std::int64_t e = edge_in(table, *p);
+    if (e < 0) {
+      const std::optional<std::int64_t> b = elevation_bin(*p, bin_degrees);
+      if (!b) continue;
+      e = *b - lowest;
+    }
+    ++dense[e];
+    ++used;
   }
-  return lowest_ + static_cast<std::int64_t>(e);
+  return used;
 }
 
 std::vector<ElevationBeam> elevation_beams(const std::vector<std::pair<std::int64_t, std::size_t>>& sorted_counts) {

@@ -2,6 +2,8 @@
 // beams a set of points spans: an object seen on too few scan lines shows no vertical extent.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -33,7 +35,23 @@ class ElevationBins {
 
   explicit ElevationBins(double bin_degrees);
 
-  std::optional<std::int64_t> operator()(const Point& p) const;
+  std::optional<std::int64_t> operator()(const Point& p) const {
+    const std::int64_t e = edge_index(p);
+    if (e >= 0) return lowest_ + e;
+    return elevation_bin(p, bin_degrees_);
+  }
+
+  // The bin of `p` less lowest() when the table decides it; -1 when elevation_bin must (not
+  // tabulated, within kEdgeMargin of an edge, squares that over- or underflow). Inline: a lidar
+  // test bins every point of a cloud.
+  std::int64_t edge_index(const Point& p) const {
+    if (edges_.empty()) return -1;
+    return edge_in(Table{edges_.data(), edges_.size(), first_edge_.data(), cells_per_unit_, max_cell_}, p);
+  }
+
+  // Adds one to dense[b - lowest()] for the bin b of each point of [first, last) that has one
+  // (tabulated() only: dense holds span() counts); returns how many had one. operator()'s bins.
+  std::size_t count_bins(const Point* first, const Point* last, std::size_t* dense) const;
 
   // Every bin operator() returns lies in [lowest(), lowest() + span()) when tabulated(): dense
   // counts fit an array of span() entries.
@@ -47,6 +65,29 @@ class ElevationBins {
   std::vector<double> edges_;    // the sine of bin lowest_ + e's lower edge, clamped to [-1, 1]
   std::vector<std::uint32_t> first_edge_;  // per cell of s (uniform over [-1, 1]): an edge at or below it
   double cells_per_unit_ = 0.0;
+  double max_cell_ = 0.0;  // the last cell of first_edge_
+
+  // The members edge_in reads, copied: a loop keeps them in registers across its elevation_bin calls.
+  struct Table {
+    const double* edges;
+    std::size_t size;
+    const std::uint32_t* first_edge;
+    double cells_per_unit, max_cell;
+  };
+  static std::int64_t edge_in(const Table& t, const Point& p) {
+    // s = sin(elevation), off by a few roundings (1e-15) while the squares neither over- nor
+    // underflow; atan2's bin is off by as little. So a sine farther than kEdgeMargin from every
+    // edge's lies in atan2's bin (|d sin| <= |d angle|: the margin in angle is larger still).
+    const double r2 = p.x() * p.x() + p.y() * p.y() + p.z() * p.z();
+    if (!(r2 >= 1e-280 && r2 <= 1e280)) return -1;
+    const double s = p.z() / std::sqrt(r2);
+    const double cell = std::clamp((s + 1.0) * t.cells_per_unit, 0.0, t.max_cell);
+    std::size_t e = t.first_edge[static_cast<std::size_t>(cell)];
+    while (e > 0 && t.edges[e] > s) --e;
+    while (e + 1 < t.size && t.edges[e + 1] <= s) ++e;
+    if (e + 1 >= t.size || !(s - t.edges[e] > kEdgeMargin) || !(t.edges[e + 1] - s > kEdgeMargin)) return -1;
+    return static_cast<std::int64_t>(e);
+  }
 };
 
 // A beam: a run of adjacent occupied elevation bins, empty ones either side, holding at least

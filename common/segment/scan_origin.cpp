@@ -29,17 +29,17 @@ std::optional<Point> scan_origin(const PointList& points, const config::SegmentC
     auto& dense = block_dense[begin / per_block];
     auto& counts = block_counts[begin / per_block];
     std::size_t& used = block_used[begin / per_block];
-    if (bins.tabulated()) dense.assign(bins.span(), 0);
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::optional<std::int64_t> b = bins(points[i]);
-      if (!b) continue;
-      if (bins.tabulated()) {
-        ++dense[static_cast<std::size_t>(*b - bins.lowest())];
-      } else {
+    if (!bins.tabulated()) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::optional<std::int64_t> b = bins(points[i]);
+        if (!b) continue;
         ++counts[*b];
+        ++used;
       }
-      ++used;
+      return;
     }
+    dense.assign(bins.span(), 0);
+    used = bins.count_bins(points.data() + begin, points.data() + end, dense.data());
   });
   std::size_t used = 0;
   for (std::size_t u : block_used) used += u;

@@ -59,6 +59,20 @@ TEST(KdTree, KnnMatchesBruteForce) {
   }
 }
 
+TEST(KdTree, NearestOtherIsKnnsSecondDistance) {
+  std::mt19937_64 rng(6);
+  PointList pts = cube_points(rng, 3000);
+  for (int i = 0; i < 40; ++i) pts.push_back(pts[i * 7]);  // duplicates: 0
+  const KdTree tree(pts);
+  std::vector<std::uint32_t> idx;
+  std::vector<double> d2;
+  for (std::uint32_t i = 0; i < pts.size(); ++i) {
+    tree.knn(pts[i], 2, idx, &d2);
+    ASSERT_EQ(tree.nearest_other_sq_dist(i), d2[1]) << i;
+  }
+  EXPECT_EQ(tree.nearest_other_sq_dist(7), 0.0);
+}
+
 TEST(KdTree, RadiusFindsExactlyThePointsInside) {
   PointList pts;
   for (int x = 0; x < 10; ++x)

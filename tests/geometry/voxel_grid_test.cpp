@@ -1,7 +1,9 @@
 // Voxel grid centroids, its isolated-voxel filter, and the resolution estimate.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "geometry/kdtree.hpp"
@@ -61,6 +63,94 @@ TEST(VoxelGrid, CountOfOccupiedVoxelsIsTheDownsampledSize) {
     EXPECT_EQ(count_occupied_voxels(pts, voxel), voxel_grid_downsample(pts, voxel).size()) << "voxel " << voxel;
   }
   EXPECT_EQ(count_occupied_voxels({}, 1.0), 0u);
+}
+
+// The centroids in the order of each voxel's first point, summed in point order: what both the
+// dense array (a compact cloud) and the hash map (a sparse one) must give to the bit.
+PointList reference_centroids(const PointList& pts, double voxel) {
+  const Bounds b = bounding_box(pts);
+  std::map<std::array<std::int64_t, 3>, std::size_t> slot;
+  std::vector<std::pair<Point, int>> acc;
+  for (const Point& p : pts) {
+    const Eigen::Vector3d q = (p - b.min) * (1.0 / voxel);
+    const std::array<std::int64_t, 3> key{static_cast<std::int64_t>(q.x()), static_cast<std::int64_t>(q.y()),
+                                          static_cast<std::int64_t>(q.z())};
+    const auto [it, inserted] = slot.emplace(key, acc.size());
+    if (inserted) acc.emplace_back(Point::Zero(), 0);
+    acc[it->second].first += p;
+    ++acc[it->second].second;
+  }
+  PointList out;
+  for (const auto& [sum, count] : acc) out.push_back(sum / static_cast<double>(count));
+  return out;
+}
+
+TEST(VoxelGrid, CompactAndSparseCloudsGiveTheCentroidsInFirstPointOrder) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  PointList compact;  // many points a voxel: the grid fits an array
+  for (int i = 0; i < 20000; ++i) compact.emplace_back(u(rng), 0.5 * u(rng), 0.2 * u(rng));
+  PointList sparse = compact;  // one point far off: the grid does not
+  sparse.resize(300);
+  sparse.emplace_back(500.0, -300.0, 40.0);
+  for (const PointList* pts : {&compact, &sparse}) {
+    for (double voxel : {0.05, 0.13, 0.4}) {
+      EXPECT_EQ(voxel_grid_downsample(*pts, voxel), reference_centroids(*pts, voxel)) << pts->size() << " " << voxel;
+      EXPECT_EQ(count_occupied_voxels(*pts, voxel), reference_centroids(*pts, voxel).size());
+    }
+  }
+}
+
+TEST(VoxelGrid, AnIsolatedVoxelInsideACompactCloudIsDropped) {
+  PointList pts;
+  for (int x = 0; x < 40; ++x)
+    for (int y = 0; y < 40; ++y)
+      for (int k = 0; k < 8; ++k) pts.emplace_back(x * 0.1 + 0.01 * k, y * 0.1 + 0.005 * k, 0.0);
+  pts.emplace_back(2.05, 2.05, 0.55);  // within the sheet's box, five voxels above it
+  std::size_t isolated = 0;
+  const PointList out = voxel_grid_downsample(pts, 0.1, 2, &isolated);
+  EXPECT_EQ(isolated, 1u);
+  EXPECT_EQ(out.size(), 1600u);
+}
+
+// The voxel-size search's subsample, strided in place: the copied subsample's box and counts.
+TEST(VoxelGrid, AStridedCountIsTheCopiedSubsamplesCount) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> n(0.0, 1.0);
+  PointList pts;
+  for (int i = 0; i < 5000; ++i) pts.emplace_back(n(rng), 2.0 * n(rng), -0.0 * n(rng));
+  pts.emplace_back(900.0, 0.0, 0.0);
+  for (std::size_t stride : {1u, 2u, 3u, 7u, 5001u, 9000u}) {
+    PointList copy;
+    for (std::size_t i = 0; i < pts.size(); i += stride) copy.push_back(pts[i]);
+    const Bounds b = bounding_box(pts, stride), expected = bounding_box(copy);
+    EXPECT_EQ(b.min, expected.min);
+    EXPECT_EQ(b.max, expected.max);
+    for (double voxel : {0.02, 0.3, 5.0, 0.0}) {
+      EXPECT_EQ(count_occupied_voxels(pts, voxel, &b, stride), count_occupied_voxels(copy, voxel)) << stride;
+      EXPECT_EQ(count_occupied_voxels(pts, voxel, nullptr, stride), voxel_grid_downsample(copy, voxel).size());
+    }
+  }
+}
+
+// Eigen's cwiseMin and cwiseMax, the box bounding_box gave before it compared coordinates itself.
+TEST(VoxelGrid, TheBoundingBoxIsEigensToTheBit) {
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PointList pts{Point(0.0, -0.0, 0.0), Point(-0.0, 0.0, -0.0)};
+  for (int i = 0; i < 1000; ++i) pts.emplace_back(u(rng), u(rng), i % 3 == 0 ? 0.0 : -0.0);
+  Point lo = pts.front(), hi = pts.front();
+  for (const Point& p : pts) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const Bounds b = bounding_box(pts);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_EQ(std::signbit(b.min[a]), std::signbit(lo[a]));
+    EXPECT_EQ(std::signbit(b.max[a]), std::signbit(hi[a]));
+  }
+  EXPECT_EQ(b.min, lo);
+  EXPECT_EQ(b.max, hi);
 }
 
 TEST(Resolution, MeanNearestNeighbourOfARegularGrid) {

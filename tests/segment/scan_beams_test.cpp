@@ -83,6 +83,10 @@ TEST(SegmentScanBeams, TabulatedBinsAreElevationBins) {
       ASSERT_EQ(got.has_value(), expected.has_value()) << bin << " " << p.transpose();
       if (!expected) continue;
       ASSERT_EQ(*got, *expected) << bin << " " << p.transpose();
+      const std::int64_t e = bins.edge_index(p);
+      if (e >= 0) {
+        ASSERT_EQ(bins.lowest() + e, *expected) << bin << " " << p.transpose();
+      }
       if (bins.tabulated()) {
         EXPECT_GE(*got, bins.lowest());
         EXPECT_LT(*got, bins.lowest() + static_cast<std::int64_t>(bins.span()));
