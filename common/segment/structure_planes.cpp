@@ -8,6 +8,7 @@
 #include "geometry/pca.hpp"
 #include "segment/detail/key_index.hpp"
 #include "segment/detail/robust_spread.hpp"
+#include "segment/structure_band.hpp"
 #include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
@@ -21,37 +22,6 @@ struct PlaneFit {
   geometry::Plane plane;
   std::vector<std::uint32_t> inliers;
 };
-
-bool is_inlier(const NeighbourGraph& g, std::uint32_t n, const geometry::Plane& p, double band, double min_cos) {
-  return std::abs(p.signed_distance(g.nodes[n])) <= band * g.spacing[n] &&
-         std::abs(g.normals[n].dot(p.normal)) >= min_cos;
-}
-
-// The largest set of inliers connected through graph edges among themselves.
-std::vector<std::uint32_t> largest_connected(const NeighbourGraph& g, const std::vector<std::uint32_t>& members) {
-  std::vector<int> state(g.size(), 0);  // 0 not a member, 1 member unvisited, 2 visited
-  for (std::uint32_t n : members) state[n] = 1;
-  std::vector<std::uint32_t> best, current, stack;
-  for (std::uint32_t seed : members) {
-    if (state[seed] != 1) continue;
-    current.clear();
-    stack.assign(1, seed);
-    state[seed] = 2;
-    while (!stack.empty()) {
-      const std::uint32_t n = stack.back();
-      stack.pop_back();
-      current.push_back(n);
-      g.for_neighbours(n, [&](std::uint32_t m) {
-        if (state[m] == 1) {
-          state[m] = 2;
-          stack.push_back(m);
-        }
-      });
-    }
-    if (current.size() > best.size()) best.swap(current);
-  }
-  return best;
-}
 
 PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& active,
                     const std::vector<std::uint32_t>& seeds, const config::SegmentConfig& cfg, std::mt19937_64& rng,
@@ -112,11 +82,7 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
   PlaneFit fit;
   fit.plane = best;
   for (int refit = 0; refit < 2; ++refit) {
-    fit.inliers.clear();
-    for (std::uint32_t n : active) {
-      if (is_inlier(g, n, fit.plane, band, min_cos)) fit.inliers.push_back(n);
-    }
-    fit.inliers = largest_connected(g, fit.inliers);
+    fit.inliers = largest_connected(g, band_nodes(g, active, fit.plane, band, min_cos));
     if (fit.inliers.size() < 3) break;
     const geometry::Pca pca = geometry::compute_pca(g.nodes, fit.inliers);
     geometry::Plane refined;
@@ -132,7 +98,14 @@ PlaneFit best_plane(const NeighbourGraph& g, const std::vector<std::uint32_t>& a
 // overflow any integer (found by fuzzing PointCloud2 input: a cast of infinity is undefined).
 std::int64_t cell_index(double coordinate, double cell) {
   constexpr double kLimit = 4.0e18;
-  const double index = std::floor(coordinate / cell);
+  const double quotient = coordinate / cell;
+  // Within the limits, the floor as the truncation, one lower below a negative fraction: the same
+  // integer (a truncated quotient is exact as a double again), in fewer instructions than floor.
+  if (quotient > -kLimit && quotient < kLimit) {
+    const auto truncated = static_cast<std::int64_t>(quotient);
+    return truncated - (static_cast<double>(truncated) > quotient ? 1 : 0);
+  }
+  const double index = std::floor(quotient);
   return static_cast<std::int64_t>(std::isnan(index) ? 0.0 : std::clamp(index, -kLimit, kLimit));
 }
 
@@ -143,10 +116,18 @@ std::size_t occupied_cells(const NeighbourGraph& g, const std::vector<std::uint3
   geometry::plane_basis(p.normal, u, v);
   KeyIndex cells(nodes.size());
   bool added = false;
+  // Consecutive nodes (neighbours along a row or a search's path) often share a cell: it is
+  // looked up once.
+  std::uint64_t previous = 0;
+  bool first = true;
   for (std::uint32_t n : nodes) {
     const std::int64_t cu = cell_index(u.dot(g.nodes[n]), cell);
     const std::int64_t cv = cell_index(v.dot(g.nodes[n]), cell);
-    cells.index((static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff), added);
+    const std::uint64_t key = (static_cast<std::uint64_t>(cu) << 32) ^ static_cast<std::uint64_t>(cv & 0xffffffff);
+    if (!first && key == previous) continue;
+    cells.index(key, added);
+    previous = key;
+    first = false;
   }
   return cells.size();
 }
@@ -196,10 +177,16 @@ std::size_t standing_inside(const NeighbourGraph& g, const std::vector<std::uint
     }
   };
   Spans rows{KeyIndex(inliers.size()), {}}, cols{KeyIndex(inliers.size()), {}};
+  // A cell as the node before's widens nothing more (see occupied_cells).
+  std::pair<std::int64_t, std::int64_t> previous{};
+  bool first = true;
   for (std::uint32_t n : inliers) {
-    const auto [cu, cv] = cell_of(g.nodes[n]);
-    rows.widen(cv, cu);
-    cols.widen(cu, cv);
+    const auto cell_uv = cell_of(g.nodes[n]);
+    if (!first && cell_uv == previous) continue;
+    rows.widen(cell_uv.second, cell_uv.first);
+    cols.widen(cell_uv.first, cell_uv.second);
+    previous = cell_uv;
+    first = false;
   }
   std::size_t inside = 0;
   for (std::uint32_t n : contact) {
@@ -265,13 +252,7 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     // A plane that proved to be no structure is left out of the search for the next one, but
     // its nodes still count as standing on the next.
     std::vector<std::uint32_t> active, searched, seeds;
-    for (std::uint32_t n = 0; n < g.size(); ++n) {
-      if (removed[n]) continue;
-      active.push_back(n);
-      if (tried[n]) continue;
-      searched.push_back(n);
-      if (g.curvature[n] < 0.02) seeds.push_back(n);
-    }
+    split_nodes(g, removed, tried, 0.02, active, searched, seeds);
     if (seeds.empty() || static_cast<double>(searched.size()) < min_nodes) break;
     PlaneFit fit = best_plane(g, searched, seeds, cfg, rng, pool);
     if (static_cast<double>(fit.inliers.size()) < min_nodes) break;
@@ -295,12 +276,8 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     }
     // What stands on the plane, and where it touches it: the nodes just above its band.
     std::vector<std::uint32_t> standing, contact;
-    for (std::uint32_t n : active) {
-      const double height = fit.plane.signed_distance(g.nodes[n]) / g.spacing[n];
-      if (inlier[n] || height <= 0.0) continue;
-      standing.push_back(n);
-      if (height > cfg.structure_band && height <= cfg.structure_contact * cfg.structure_band) contact.push_back(n);
-    }
+    nodes_above(g, active, inlier, fit.plane, cfg.structure_band, cfg.structure_contact * cfg.structure_band, standing,
+                contact);
     const double cell = 2.0 * median_spacing(g, fit.inliers);
     // Nodes of no spacing (one repeated point) span no area to compare.
     if (!(cell > 0.0)) {
@@ -322,11 +299,11 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     // Every node in the plane's band, its connected part or not: the table beyond an object's shadow
     // is cut off from the part in front of it, and still shows where the table reaches.
     const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);
-    std::vector<std::uint32_t> in_band, coplanar;
-    for (std::uint32_t n : active) {
-      const bool band = is_inlier(g, n, fit.plane, cfg.structure_band, min_cos);
-      if (band) in_band.push_back(n);
-      if (band || inlier[n]) coplanar.push_back(n);
+    const std::vector<std::uint32_t> in_band = band_nodes(g, active, fit.plane, cfg.structure_band, min_cos);
+    // The inliers and the rest of the band (standing_inside takes them in any order).
+    std::vector<std::uint32_t> coplanar = fit.inliers;
+    for (std::uint32_t n : in_band) {
+      if (!inlier[n]) coplanar.push_back(n);
     }
     const std::size_t inside = standing_inside(g, coplanar, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
