@@ -31,6 +31,10 @@ trap cs_pipeline_cleanup EXIT
 cs_start_pipeline() {
   local domain="$1" out="$2" err="$3"
   shift 3
+  # Checked here too: echo's own refusal would go to ERR, and the script stop without a word.
+  if ! [[ "$domain" =~ ^[0-9]+$ ]] || ((domain > 232)); then
+    cs_die "DDS domain \"$domain\" is not a domain id in 0..232"
+  fi
   "$bin/cloudshape-echo" --domain "$domain" "$@" >"$out" 2>"$err" &
   echo_pid=$!
   "$launch" start --domain "$domain" "${launch_args[@]}" >/dev/null 2>&1
