@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "geometry/detail/flat_hash.hpp"
 #include "geometry/grid_neighbours.hpp"
@@ -46,6 +47,16 @@ std::array<std::uint64_t, 3> dense_dims(const Bounds& b, double inv, std::uint64
   }
   if (!(cells <= max_cells)) dims = {};
   return dims;
+}
+
+// Whether voxel `c` lies in the dense array of `dims` (with `margin` either side): always, when the
+// bounds given are the points' own box, as the header asks; a wrong box falls back to the map
+// instead of indexing outside the array.
+bool in_dense(const std::array<std::int64_t, 3>& c, const std::array<std::uint64_t, 3>& dims, std::uint64_t margin) {
+  for (int a = 0; a < 3; ++a) {
+    if (!(static_cast<std::uint64_t>(c[a]) < dims[a] - 2 * margin)) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -115,16 +126,18 @@ std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& 
   return acc;
 }
 
-// The same over a dense array of `dims` cells (one of margin either side), `key` the cell's index.
-std::vector<VoxelSum> sum_voxels_in_array(const PointList& points, const VoxelOf& voxel_of,
-                                          const std::array<std::uint64_t, 3>& dims, int min_occupied_neighbours,
-                                          std::vector<char>& lonely) {
+// The same over a dense array of `dims` cells (one of margin either side), `key` the cell's index;
+// none when a point lies outside the array (bounds that are not the points' box).
+std::optional<std::vector<VoxelSum>> sum_voxels_in_array(const PointList& points, const VoxelOf& voxel_of,
+                                                         const std::array<std::uint64_t, 3>& dims,
+                                                         int min_occupied_neighbours, std::vector<char>& lonely) {
   const std::uint64_t ny = dims[1], nz = dims[2];
   std::vector<std::uint32_t> slot(dims[0] * ny * nz, detail::CellMap::kAbsent);
   std::vector<VoxelSum> acc;
   acc.reserve(points.size() / 4 + 16);
   for (const Point& p : points) {
     const auto c = voxel_of(p);
+    if (!in_dense(c, dims, 1)) return std::nullopt;
     const std::uint64_t cell = ((static_cast<std::uint64_t>(c[0]) + 1) * ny + static_cast<std::uint64_t>(c[1]) + 1) * nz +
                                static_cast<std::uint64_t>(c[2]) + 1;
     std::uint32_t& s = slot[cell];
@@ -168,9 +181,10 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   // point) and no hashing.
   const auto dims = dense_dims(b, inv, 1, 2.0 * static_cast<double>(points.size()));
   std::vector<char> lonely;
+  std::optional<std::vector<VoxelSum>> in_array;
+  if (dims[0] > 0) in_array = sum_voxels_in_array(points, voxel_of, dims, min_occupied_neighbours, lonely);
   const std::vector<VoxelSum> acc =
-      dims[0] > 0 ? sum_voxels_in_array(points, voxel_of, dims, min_occupied_neighbours, lonely)
-                  : sum_voxels_in_map(points, voxel_of, min_occupied_neighbours, lonely);
+      in_array ? std::move(*in_array) : sum_voxels_in_map(points, voxel_of, min_occupied_neighbours, lonely);
   std::size_t lonely_count = 0;
   for (char l : lonely) lonely_count += static_cast<std::size_t>(l);
   // Many lonely voxels mean the grid is finer than the cloud's own sampling, not that
@@ -199,8 +213,13 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   if (dims[0] > 0) {
     const std::uint64_t cells = dims[0] * dims[1] * dims[2];
     std::vector<std::uint64_t> bits((cells + 63) / 64, 0);
+    bool inside = true;
     for (std::size_t i = 0; i < points.size(); i += stride) {
       const auto c = voxel_of(points[i]);
+      if (!in_dense(c, dims, 0)) {
+        inside = false;
+        break;
+      }
       const std::uint64_t cell =
           (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) * dims[2] +
           static_cast<std::uint64_t>(c[2]);
@@ -209,7 +228,8 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
       occupied += (word & bit) == 0 ? 1 : 0;
       word |= bit;
     }
-    return occupied;
+    if (inside) return occupied;
+    occupied = 0;
   }
   // Room for a voxel per point: the finest voxel of a search often holds one or two points, and
   // a map that grows rehashes every key it has.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <set>
 
 #include "geometry/kdtree.hpp"
 #include "geometry/voxel_grid.hpp"
@@ -131,6 +132,29 @@ TEST(VoxelGrid, AStridedCountIsTheCopiedSubsamplesCount) {
       EXPECT_EQ(count_occupied_voxels(pts, voxel, nullptr, stride), voxel_grid_downsample(copy, voxel).size());
     }
   }
+}
+
+// Bounds that are not the points' own box (the header asks for it) put points outside the dense
+// array: the count and the grid fall back to the map, and give its voxels, counted by hand here.
+TEST(VoxelGrid, PointsOutsideTheBoundsGivenFallBackToTheMap) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  PointList pts;
+  for (int i = 0; i < 4000; ++i) pts.emplace_back(u(rng), u(rng), 0.25 * u(rng));
+  const double voxel = 0.05;
+  Bounds wrong;  // a small box below the points: every point lies beyond its far corner
+  wrong.min = Point(-2.0, -2.0, -2.0);
+  wrong.max = Point(-1.9, -1.9, -1.9);
+  std::set<std::array<std::int64_t, 3>> cells;
+  for (const Point& p : pts) {
+    const Eigen::Vector3d q = (p - wrong.min) / voxel;
+    cells.insert({static_cast<std::int64_t>(std::floor(q.x())), static_cast<std::int64_t>(std::floor(q.y())),
+                  static_cast<std::int64_t>(std::floor(q.z()))});
+  }
+  EXPECT_EQ(count_occupied_voxels(pts, voxel, &wrong), cells.size());
+  EXPECT_EQ(voxel_grid_downsample(pts, voxel, 0, nullptr, &wrong).size(), cells.size());
+  // With the points' own box, the same cloud takes the dense paths.
+  EXPECT_GT(count_occupied_voxels(pts, voxel), 100u);
 }
 
 // Eigen's cwiseMin and cwiseMax, the box bounding_box gave before it compared coordinates itself.
