@@ -7,23 +7,13 @@
 #include <cmath>
 #include <random>
 
+#include "inlier_reference.hpp"
 #include "segment/structure_band.hpp"
 
 namespace cloudshape::segment {
 namespace {
 
-std::vector<std::uint32_t> eigen_band(const NeighbourGraph& g,
-                                      const std::vector<std::uint32_t>& nodes,
-                                      const geometry::Plane& p, double band, double min_cos) {
-  std::vector<std::uint32_t> out;
-  for (std::uint32_t n : nodes) {
-    if (std::abs(p.signed_distance(g.nodes[n])) <= band * g.spacing[n] &&
-        std::abs(g.normals[n].dot(p.normal)) >= min_cos) {
-      out.push_back(n);
-    }
-  }
-  return out;
-}
+using test::eigen_band;
 
 TEST(StructureBand, SameNodesInTheSameOrderAsIsInlier) {
   std::mt19937_64 rng(17);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "inlier_reference.hpp"
 #include "segment/structure_planes_scoring.hpp"
 
 namespace cloudshape::segment {
@@ -13,14 +14,7 @@ namespace {
 
 std::size_t eigen_count(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes, const geometry::Plane& p,
                         double band, double min_cos) {
-  std::size_t count = 0;
-  for (std::uint32_t n : nodes) {
-    count += std::abs(p.signed_distance(g.nodes[n])) <= band * g.spacing[n] &&
-                     std::abs(g.normals[n].dot(p.normal)) >= min_cos
-                 ? 1
-                 : 0;
-  }
-  return count;
+  return test::eigen_band(g, nodes, p, band, min_cos).size();
 }
 
 TEST(StructureScoring, CountsAsIsInlierDoes) {
