@@ -152,4 +152,9 @@ std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) 
   return fit_around_axis(in, detail::faces_by_size(in.planes), {}, detail::axis_from_normals(in.cloud_normals()), true);
 }
 
+const std::optional<FittedSolid>& SolveInput::side_normals_cylinder() const {
+  if (!side_normals_cylinder_) side_normals_cylinder_ = fit_cylinder_from_side_normals(*this);
+  return *side_normals_cylinder_;
+}
+
 }  // namespace cloudshape::pipeline

@@ -50,7 +50,7 @@ std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
   // the cone the side's tangent planes meet in (a strong one; a slight one's apex is ill placed).
   // The fit on more points within its band wins.
   std::vector<detail::SideCone> starts;
-  if (const auto cylinder = fit_cylinder_from_side_normals(in))
+  if (const auto& cylinder = in.side_normals_cylinder())
     starts.push_back({cylinder->center, cylinder->axes.row(0).transpose(), cylinder->dimensions[0].second, 0.0});
   if (const auto cone = detail::cone_without_base(in)) {
     const double radius = cone->dimensions[0].second, height = cone->dimensions[1].second;

@@ -23,6 +23,24 @@ struct SurfaceSample {
 };
 }  // namespace detail
 
+struct FittedSolid {
+  Shape shape = Shape::unknown;
+  std::vector<std::pair<std::string, double>> dimensions;  // INTERFACE.md names and order
+  Point center = Point::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows as INTERFACE.md's axes[0..2]
+  // A point well inside the solid, from which every direction meets its surface once. It is
+  // the pose centre except where that lies on the surface (the cone's base centre).
+  std::optional<Point> interior;
+  // Shape extras of INTERFACE.md: a tetrahedron's corners and whether it is regular, a
+  // prism's cross-section (counter-clockwise in the axes[1], axes[2] plane about center).
+  std::vector<Point> vertices;
+  bool regular = false;
+  std::vector<Eigen::Vector2d> polygon;
+  // Signed distance of a point to the solid's surface (negative inside); exact on the
+  // surface, a lower bound away from it, which is all verification needs.
+  std::function<double(const Point&)> signed_distance;
+};
+
 struct SolveInput {
   SolveInput(const PointList& cloud_, const PlaneSegmentation& planes_, const KeypointSet& keypoints_,
              const Classification& classification_, double resolution_,
@@ -45,26 +63,13 @@ struct SolveInput {
   // need them (cylinder and cone without a face to seed them).
   const std::vector<detail::SurfaceSample>& cloud_normals() const;
 
+  // fit_cylinder_from_side_normals, fitted on first use: the frustum's side fit starts from it
+  // and the solver's second chance is it, on the same input.
+  const std::optional<FittedSolid>& side_normals_cylinder() const;
+
  private:
   mutable std::optional<std::vector<detail::SurfaceSample>> normals_;
-};
-
-struct FittedSolid {
-  Shape shape = Shape::unknown;
-  std::vector<std::pair<std::string, double>> dimensions;  // INTERFACE.md names and order
-  Point center = Point::Zero();
-  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();  // rows as INTERFACE.md's axes[0..2]
-  // A point well inside the solid, from which every direction meets its surface once. It is
-  // the pose centre except where that lies on the surface (the cone's base centre).
-  std::optional<Point> interior;
-  // Shape extras of INTERFACE.md: a tetrahedron's corners and whether it is regular, a
-  // prism's cross-section (counter-clockwise in the axes[1], axes[2] plane about center).
-  std::vector<Point> vertices;
-  bool regular = false;
-  std::vector<Eigen::Vector2d> polygon;
-  // Signed distance of a point to the solid's surface (negative inside); exact on the
-  // surface, a lower bound away from it, which is all verification needs.
-  std::function<double(const Point&)> signed_distance;
+  mutable std::optional<std::optional<FittedSolid>> side_normals_cylinder_;
 };
 
 std::optional<FittedSolid> fit_box(const SolveInput& in);

@@ -169,6 +169,25 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
 
 }  // namespace
 
+namespace detail {
+
+// A frustum is never chosen where another solid explains within `margin` of the most (below), so
+// it counts only through the most it may raise: not where another explains within `margin` of
+// every point, and those within `margin` of the most are the same whatever the frustum explains
+// (at most every point: the same set at both ends of that range is the same set all along it).
+bool frustum_may_matter(const std::vector<double>& explained, double margin) {
+  double most = -1.0;
+  for (double e : explained) most = std::max(most, e);
+  const double all_but_margin = 1.0 - margin;
+  if (most < all_but_margin) return true;
+  for (double e : explained) {
+    if ((e < most - margin) != (e < all_but_margin)) return true;
+  }
+  return false;
+}
+
+}  // namespace detail
+
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
@@ -214,13 +233,31 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                            cfg.flat_face_min_fill, cfg.side_face_min_share, cfg.arc_max_scatter_cells,
                            cfg.arc_min_sagitta_cells, fills) <= cfg.curved_side_flat_share;
   };
-  for (Shape shape : candidates) {
-    auto solid = fit_solid(shape, input);
-    if (!admissible(solid)) continue;
+  // Each candidate's fit in candidate order (the order keeps ties); the frustum's last, and only
+  // where it can change the choice (detail::frustum_may_matter): it costs as much as the others.
+  std::vector<std::optional<std::pair<FittedSolid, Verification>>> fit_of(candidates.size());
+  const auto fit_candidate = [&](std::size_t i) {
+    auto solid = fit_solid(candidates[i], input);
+    if (!admissible(solid)) return;
     const Verification v =
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-    best = std::max(best, v.explained);
-    fitted.emplace_back(std::move(*solid), v);
+    fit_of[i].emplace(std::move(*solid), v);
+  };
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i] != Shape::frustum) fit_candidate(i);
+  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i] != Shape::frustum) continue;
+    std::vector<double> explained;
+    for (const auto& f : fit_of) {
+      if (f) explained.push_back(f->second.explained);
+    }
+    if (detail::frustum_may_matter(explained, cfg.preferred_margin)) fit_candidate(i);
+  }
+  for (auto& f : fit_of) {
+    if (!f) continue;
+    best = std::max(best, f->second.explained);
+    fitted.push_back(std::move(*f));
   }
   // Among the solids explaining nearly the most points, the closest fit wins: on a sparse
   // cloud a cylinder explains a pentagonal prism's points too, but not as closely. The
@@ -255,7 +292,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // too, and a cylinder explaining nearly as many (cfg.preferred_margin) stands.
   const bool frustum = chosen && chosen->first.shape == Shape::frustum;
   if (!sphere_only && (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum)) {
-    if (auto second = fit_cylinder_from_side_normals(input); admissible(second)) {
+    if (auto second = input.side_normals_cylinder(); admissible(second)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
       const double to_beat =

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "config/stage_configs.hpp"
 #include "pipeline/classify.hpp"
@@ -30,5 +31,12 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                           const geometry::KdTree* tree = nullptr,
                           const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1,
                           std::uint32_t scan_lines = 0);
+
+namespace detail {
+// Whether a frustum's fit can change which solid solve_object chooses among the others, given the
+// shares of the points the others explain (`explained`: the admissible ones) and
+// cfg.preferred_margin: where it cannot, solve_object does not fit it.
+bool frustum_may_matter(const std::vector<double>& explained, double margin);
+}  // namespace detail
 
 }  // namespace cloudshape::pipeline
