@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -167,6 +168,156 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
   return false;
 }
 
+// A point's cell, with one cell of margin below (nearest_other_distances' grid).
+struct CellCoords {
+  Point min;
+  double inv;
+  std::array<std::int64_t, 3> operator()(const Point& p) const {
+    const Eigen::Vector3d c = (p - min) * inv;
+    return {static_cast<std::int64_t>(c.x()) + 1, static_cast<std::int64_t>(c.y()) + 1,
+            static_cast<std::int64_t>(c.z()) + 1};
+  }
+};
+
+// The least squared distance from each query to another point of its 27-cell block (infinity if
+// none): the cells of the queries' blocks in a map, each with the queries it serves, then one pass
+// over the points, a lookup each, instead of binning them all.
+std::vector<double> nearest_in_blocks(const PointList& points, const std::vector<std::uint32_t>& queries,
+                                      const CellCoords& coords, parallel::ThreadPool* pool) {
+  detail::CellMap blocks(queries.size() * 27);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
+  pairs.reserve(queries.size() * 27);
+  std::uint32_t block_cells = 0;
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const auto c = coords(points[queries[q]]);
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dz = -1; dz <= 1; ++dz) {
+          bool inserted = false;
+          const std::uint32_t b = blocks.find_or_insert(key_of(c[0] + dx, c[1] + dy, c[2] + dz), block_cells, inserted);
+          block_cells += inserted ? 1 : 0;
+          pairs.emplace_back(b, static_cast<std::uint32_t>(q));
+        }
+      }
+    }
+  }
+  std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
+  for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
+  for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
+  std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
+  for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
+  // Blocks of points on the pool, each with its own minima; a minimum is the same in any order.
+  constexpr std::size_t kPointsPerBlock = 16384;
+  std::vector<std::vector<double>> best_of_block((points.size() + kPointsPerBlock - 1) / kPointsPerBlock);
+  parallel::for_blocks(pool, points.size(), kPointsPerBlock, [&](std::size_t begin, std::size_t end) {
+    std::vector<double>& best = best_of_block[begin / kPointsPerBlock];
+    best.assign(queries.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto c = coords(points[i]);
+      const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
+      if (slot == detail::CellMap::kAbsent) continue;
+      for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
+        const std::uint32_t q = cell_queries[e];
+        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+      }
+    }
+  });
+  std::vector<double> best = std::move(best_of_block.front());
+  for (std::size_t b = 1; b < best_of_block.size(); ++b) {
+    for (std::size_t q = 0; q < queries.size(); ++q) best[q] = std::min(best[q], best_of_block[b][q]);
+  }
+  return best;
+}
+
+// Cells of the grid's array a point may cost at most (4 bytes each, with its member index: 20
+// bytes a point); a sparser grid takes the map of nearest_in_blocks.
+constexpr double kArrayCellsPerPoint = 4.0;
+
+// nearest_in_blocks with every point binned in an array over the grid's cells (a counting sort):
+// each query reads its own cell, then only those of the other 26 whose nearest side is nearer
+// than the least distance found so far (less kSlack: no point there can be nearer, so the least
+// is the same number). Nothing when the array would be too large, or a query's block reaches
+// outside it (`extent`, in cells, is not that of the points' bounds).
+std::optional<std::vector<double>> nearest_in_cell_array(const PointList& points,
+                                                         const std::vector<std::uint32_t>& queries,
+                                                         const CellCoords& coords, const Eigen::Vector3d& extent,
+                                                         parallel::ThreadPool* pool) {
+  std::array<std::int64_t, 3> dims{};
+  double cells = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    dims[a] = static_cast<std::int64_t>(extent[a]) + 3;
+    cells *= static_cast<double>(dims[a]);
+  }
+  if (!(cells <= kArrayCellsPerPoint * static_cast<double>(points.size())) || !(cells < 4294967295.0)) return std::nullopt;
+  const auto inside = [&](const std::array<std::int64_t, 3>& c, std::int64_t margin) {
+    for (int a = 0; a < 3; ++a) {
+      if (c[a] < margin || c[a] + margin >= dims[a]) return false;
+    }
+    return true;
+  };
+  const auto index = [&](const std::array<std::int64_t, 3>& c) {
+    return static_cast<std::size_t>((c[0] * dims[1] + c[1]) * dims[2] + c[2]);
+  };
+  std::vector<std::uint32_t> cell_of(points.size());
+  std::vector<std::uint32_t> begin(static_cast<std::size_t>(cells) + 1, 0);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto c = coords(points[i]);
+    if (!inside(c, 0)) return std::nullopt;
+    cell_of[i] = static_cast<std::uint32_t>(index(c));
+    ++begin[cell_of[i] + 1];
+  }
+  for (std::size_t b = 1; b < begin.size(); ++b) begin[b] += begin[b - 1];
+  std::vector<std::uint32_t> members(points.size());
+  {
+    std::vector<std::uint32_t> next(begin.begin(), begin.end() - 1);
+    for (std::size_t i = 0; i < points.size(); ++i) members[next[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  }
+  for (std::uint32_t q : queries) {
+    if (!inside(coords(points[q]), 1)) return std::nullopt;
+  }
+  std::vector<double> best(queries.size(), std::numeric_limits<double>::infinity());
+  const double cell = 1.0 / coords.inv;
+  parallel::for_blocks(pool, queries.size(), 256, [&](std::size_t first, std::size_t last) {
+    for (std::size_t q = first; q < last; ++q) {
+      const std::uint32_t i = queries[q];
+      const Point& p = points[i];
+      const auto c = coords(p);
+      // The squared distance to the cell's lower side, none, and to its upper side along each
+      // axis (less kSlack cells): by neighbour offset -1, 0, +1.
+      const Eigen::Vector3d u = (p - coords.min) * coords.inv;
+      std::array<std::array<double, 3>, 3> side{};
+      for (int a = 0; a < 3; ++a) {
+        const double below = u[a] - std::floor(u[a]);
+        const double lo = std::max(0.0, below - kSlack) * cell, hi = std::max(0.0, 1.0 - below - kSlack) * cell;
+        side[a] = {lo * lo, 0.0, hi * hi};
+      }
+      double least = std::numeric_limits<double>::infinity();
+      const auto scan = [&](std::size_t at) {
+        for (std::uint32_t m = begin[at]; m < begin[at + 1]; ++m) {
+          const std::uint32_t j = members[m];
+          if (j != i) least = std::min(least, squared_distance(p, points[j]));
+        }
+      };
+      const std::size_t own = index(c);
+      scan(own);
+      const auto row = static_cast<std::size_t>(dims[2]), plane = static_cast<std::size_t>(dims[1] * dims[2]);
+      for (std::size_t dx = 0; dx < 3; ++dx) {
+        for (std::size_t dy = 0; dy < 3; ++dy) {
+          const double gap_xy = side[0][dx] + side[1][dy];
+          if (gap_xy > least) continue;
+          for (std::size_t dz = 0; dz < 3; ++dz) {
+            const std::size_t at = own + dx * plane + dy * row + dz - plane - row - 1;
+            if (at == own || gap_xy + side[2][dz] > least) continue;
+            scan(at);
+          }
+        }
+      }
+      best[q] = least;
+    }
+  });
+  return best;
+}
+
 }  // namespace
 
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
@@ -182,55 +333,9 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
   if (!valid) {
     for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
   } else {
-    const auto coords = [&](const Point& p) {
-      const Eigen::Vector3d c = (p - box.min) * inv;
-      return std::array<std::int64_t, 3>{static_cast<std::int64_t>(c.x()) + 1, static_cast<std::int64_t>(c.y()) + 1,
-                                         static_cast<std::int64_t>(c.z()) + 1};
-    };
-    // The cells of every query's 27-cell block, each with the queries it serves: then one pass
-    // over the points, a lookup each, instead of binning them all.
-    detail::CellMap blocks(queries.size() * 27);
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
-    pairs.reserve(queries.size() * 27);
-    std::uint32_t block_cells = 0;
-    for (std::size_t q = 0; q < queries.size(); ++q) {
-      const auto c = coords(points[queries[q]]);
-      for (std::int64_t dx = -1; dx <= 1; ++dx) {
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-          for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            bool inserted = false;
-            const std::uint32_t b = blocks.find_or_insert(key_of(c[0] + dx, c[1] + dy, c[2] + dz), block_cells, inserted);
-            block_cells += inserted ? 1 : 0;
-            pairs.emplace_back(b, static_cast<std::uint32_t>(q));
-          }
-        }
-      }
-    }
-    std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
-    for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
-    for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
-    std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
-    for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
-    // Blocks of points on the pool, each with its own minima; a minimum is the same in any order.
-    constexpr std::size_t kPointsPerBlock = 16384;
-    std::vector<std::vector<double>> best_of_block((points.size() + kPointsPerBlock - 1) / kPointsPerBlock);
-    parallel::for_blocks(pool, points.size(), kPointsPerBlock, [&](std::size_t begin, std::size_t end) {
-      std::vector<double>& best = best_of_block[begin / kPointsPerBlock];
-      best.assign(queries.size(), std::numeric_limits<double>::infinity());
-      for (std::size_t i = begin; i < end; ++i) {
-        const auto c = coords(points[i]);
-        const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
-        if (slot == detail::CellMap::kAbsent) continue;
-        for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
-          const std::uint32_t q = cell_queries[e];
-          if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
-        }
-      }
-    });
-    std::vector<double> best = std::move(best_of_block.front());
-    for (std::size_t b = 1; b < best_of_block.size(); ++b) {
-      for (std::size_t q = 0; q < queries.size(); ++q) best[q] = std::min(best[q], best_of_block[b][q]);
-    }
+    const CellCoords coords{box.min, inv};
+    std::optional<std::vector<double>> in_array = nearest_in_cell_array(points, queries, coords, extent, pool);
+    const std::vector<double> best = in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, coords, pool);
     for (std::size_t q = 0; q < queries.size(); ++q) {
       const Eigen::Vector3d u = (points[queries[q]] - box.min) * inv;
       double margin = 1.0;

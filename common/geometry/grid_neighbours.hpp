@@ -1,5 +1,5 @@
-// Exact nearest-neighbour searches on a uniform hash grid: one linear binning pass instead of
-// a kd-tree's sorting, for queries whose neighbours lie within a cell or two, with the same answers.
+// Exact nearest-neighbour searches on a uniform grid (an array of cells, or a hash map of them):
+// linear binning instead of a kd-tree's sorting, for neighbours within a cell or two, same answers.
 #pragma once
 
 #include <cstdint>

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "geometry/grid_neighbours.hpp"
+#include "geometry/kdtree.hpp"
 
 namespace cloudshape::geometry {
 namespace {
@@ -78,6 +79,19 @@ TEST(GridNeighbours, NearestOtherIsExactOnSurfaceVolumeAndLine) {
   expect_nearest_other_exact(sphere_surface(4000, 1));
   expect_nearest_other_exact(volume(3000, 2));
   expect_nearest_other_exact(line_with_outlier());
+}
+
+// A cube of 250 000 points has more cells of its grid than four a point: the hash map's path
+// (smaller clouds take the dense array's). The kd-tree's distances are the same sums.
+TEST(GridNeighbours, NearestOtherIsExactWhereTheCellsOutnumberThePoints) {
+  const PointList pts = volume(250000, 7);
+  std::vector<std::uint32_t> queries;
+  for (std::uint32_t i = 0; i < pts.size(); i += 499) queries.push_back(i);
+  const std::vector<double> got = nearest_other_distances(pts, queries);
+  const KdTree tree(pts);
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    EXPECT_EQ(got[q], std::sqrt(tree.nearest_other_sq_dist(queries[q]))) << "query " << queries[q];
+  }
 }
 
 TEST(GridNeighbours, DuplicatesAndIdenticalPointsGiveZero) {
