@@ -1,6 +1,7 @@
 #include "segment/neighbour_graph.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/detail/flat_hash.hpp"
@@ -121,6 +122,70 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
 
 namespace {
 
+// A voxel's node: an array over the bounding box's voxels where that holds at most
+// kArrayVoxelsPerPoint a point (an index instead of a hash), else the hash map of packed keys
+// (21 bits an axis). The same nodes either way: the array only where no coordinate reaches 21 bits.
+class VoxelNodes {
+ public:
+  static constexpr std::uint32_t kOutside = geometry::detail::CellMap::kAbsent - 1;
+  static constexpr double kArrayVoxelsPerPoint = 2.0;
+
+  static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
+    return (static_cast<std::uint64_t>(c[0]) << 42) | (static_cast<std::uint64_t>(c[1]) << 21) |
+           static_cast<std::uint64_t>(c[2]);
+  }
+
+  // The map alone.
+  explicit VoxelNodes(std::size_t expected) : map_(expected) {}
+
+  // The array where `extent` (the box in voxels) allows, with a voxel to spare along each axis.
+  VoxelNodes(const Eigen::Vector3d& extent, std::size_t points, std::size_t expected) : map_(16) {
+    double cells = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      if (!(extent[a] >= 0.0 && extent[a] < double((1 << 21) - 4))) cells = -1.0;
+      if (cells < 0.0) break;
+      dims_[a] = static_cast<std::int64_t>(extent[a]) + 2;
+      cells *= static_cast<double>(dims_[a]);
+    }
+    if (cells > 0.0 && cells <= kArrayVoxelsPerPoint * static_cast<double>(points)) {
+      slot_.assign(static_cast<std::size_t>(cells), geometry::detail::CellMap::kAbsent);
+    } else {
+      map_ = geometry::detail::CellMap(expected);
+    }
+  }
+
+  // The node of voxel c, `value` if it is new; kOutside if the array does not hold c (a point
+  // outside the bounds the array was sized for: then bin again with the map).
+  std::uint32_t find_or_insert(const std::array<std::int64_t, 3>& c, std::uint32_t value, bool& inserted) {
+    if (slot_.empty()) return map_.find_or_insert(key(c), value, inserted);
+    if (!holds(c)) return kOutside;
+    std::uint32_t& s = slot_[index(c)];
+    inserted = s == geometry::detail::CellMap::kAbsent;
+    if (inserted) s = value;
+    return s;
+  }
+
+  std::uint32_t find(const std::array<std::int64_t, 3>& c) const {
+    if (slot_.empty()) return map_.find(key(c));
+    return holds(c) ? slot_[index(c)] : geometry::detail::CellMap::kAbsent;
+  }
+
+ private:
+  bool holds(const std::array<std::int64_t, 3>& c) const {
+    for (int a = 0; a < 3; ++a) {
+      if (static_cast<std::uint64_t>(c[a]) >= static_cast<std::uint64_t>(dims_[a])) return false;
+    }
+    return true;
+  }
+  std::size_t index(const std::array<std::int64_t, 3>& c) const {
+    return static_cast<std::size_t>((c[0] * dims_[1] + c[1]) * dims_[2] + c[2]);
+  }
+
+  std::array<std::int64_t, 3> dims_{};
+  std::vector<std::uint32_t> slot_;
+  geometry::detail::CellMap map_;
+};
+
 NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, double voxel,
                         std::optional<std::int64_t> max_nodes, const config::SegmentConfig& cfg,
                         parallel::ThreadPool* pool) {
@@ -135,30 +200,40 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
 
   using Key = std::uint64_t;
   // p - origin >= 0 (origin is the points' minimum), so truncation is the floor.
-  const auto key_of = [&](const Point& p, double v) {
+  const auto cell_of = [&](const Point& p, double v) {
     const Eigen::Vector3d c = (p - origin) / v;
-    return (static_cast<Key>(c.x()) << 42) | (static_cast<Key>(c.y()) << 21) | static_cast<Key>(c.z());
+    return std::array<std::int64_t, 3>{static_cast<std::int64_t>(c.x()), static_cast<std::int64_t>(c.y()),
+                                       static_cast<std::int64_t>(c.z())};
   };
   // Node ids in order of first appearance; each point's node kept from the pass that found them.
   std::vector<Key> keys;
   std::vector<std::uint32_t> node;
-  const auto bin = [&](double v) {
-    geometry::detail::CellMap voxels(std::min<std::size_t>(points.size(), static_cast<std::size_t>(cap) + 1));
+  const auto bin_in = [&](double v, VoxelNodes& voxels) {
     keys.clear();
     node.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const Key key = key_of(points[i], v);
+      const auto c = cell_of(points[i], v);
       bool inserted = false;
-      node[i] = voxels.find_or_insert(key, static_cast<std::uint32_t>(keys.size()), inserted);
+      node[i] = voxels.find_or_insert(c, static_cast<std::uint32_t>(keys.size()), inserted);
+      if (node[i] == VoxelNodes::kOutside) return false;
       if (inserted) {
-        keys.push_back(key);
-        if (static_cast<double>(keys.size()) > cap) return voxels;
+        keys.push_back(VoxelNodes::key(c));
+        if (static_cast<double>(keys.size()) > cap) return true;
       }
+    }
+    return true;
+  };
+  const auto bin = [&](double v) {
+    const std::size_t expected = std::min<std::size_t>(points.size(), static_cast<std::size_t>(cap) + 1);
+    VoxelNodes voxels((box.max - box.min) / v, points.size(), expected);
+    if (!bin_in(v, voxels)) {
+      voxels = VoxelNodes(expected);
+      bin_in(v, voxels);
     }
     return voxels;
   };
   // Grow the voxel until the node budget holds; a surface fills voxels with the square of the edge.
-  geometry::detail::CellMap voxels = bin(voxel);
+  VoxelNodes voxels = bin(voxel);
   for (int attempt = 1; attempt < 40 && static_cast<double>(keys.size()) > cap; ++attempt) {
     voxel *= 1.25;
     voxels = bin(voxel);
@@ -190,8 +265,7 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
         for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
           for (int dz = dx == 0 && dy == 0 ? 1 : -1; dz <= 1; ++dz) {
             if (y + dy < 0 || z + dz < 0) continue;
-            const Key k = (static_cast<Key>(x + dx) << 42) | (static_cast<Key>(y + dy) << 21) | static_cast<Key>(z + dz);
-            const std::uint32_t m = voxels.find(k);
+            const std::uint32_t m = voxels.find({x + dx, y + dy, z + dz});
             if (m != geometry::detail::CellMap::kAbsent) found.emplace_back(static_cast<std::uint32_t>(n), m);
           }
         }

@@ -132,6 +132,30 @@ TEST(SegmentVoxelGraph, AGivenVoxelIsKeptWithoutANodeBudget) {
             1.3 * static_cast<double>(cfg.target_nodes));
 }
 
+// The voxels' nodes come from an array over the bounding box's voxels where it holds at most two
+// a point, else from a hash map: one point far beyond the box's upper corner (the corner the
+// voxels start from stays) sends the same cloud to the map, and every node of the cloud's own
+// points is the same, with the same neighbours and normal.
+TEST(SegmentVoxelGraph, TheVoxelArrayAndTheMapGiveTheSameGraph) {
+  const config::SegmentConfig cfg;
+  const PointList pts = tilted_box(30000, 5);
+  const double voxel = 3.0 * finest_voxel(pts);
+  const NeighbourGraph in_array = build_voxel_graph(pts, voxel, std::nullopt, cfg);
+  PointList with_far = pts;
+  with_far.push_back(geometry::bounding_box(pts).max + Eigen::Vector3d(1e4, 2e4, 3e4));
+  const NeighbourGraph in_map = build_voxel_graph(with_far, voxel, std::nullopt, cfg);
+  ASSERT_EQ(in_map.size(), in_array.size() + 1);
+  for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(in_map.node_of_point[i], in_array.node_of_point[i]) << i;
+  for (std::uint32_t n = 0; n < in_array.size(); ++n) {
+    EXPECT_EQ(in_map.nodes[n], in_array.nodes[n]) << "node " << n;
+    EXPECT_EQ(in_map.normals[n], in_array.normals[n]) << "node " << n;
+    std::vector<std::uint32_t> a, b;
+    in_array.for_neighbours(n, [&](std::uint32_t m) { a.push_back(m); });
+    in_map.for_neighbours(n, [&](std::uint32_t m) { b.push_back(m); });
+    EXPECT_EQ(a, b) << "node " << n;
+  }
+}
+
 // The unorganized budget coarsens a densely sampled surface to about voxel_target_nodes nodes
 // and leaves a sparse cloud at the scene-wide voxel (what an unlimited voxel_target_nodes gives).
 TEST(SegmentVoxelGraph, OnlyADenseSurfaceIsGriddedCoarser) {
