@@ -261,9 +261,14 @@ double mean_over_grid(const PointList& points, const std::vector<std::uint32_t>&
   return sum / static_cast<double>(sample.size());
 }
 
-double mean_over_tree(const KdTree& tree, const std::vector<std::uint32_t>& sample) {
+// The searches in blocks on the pool, the sum in sample order: the same value for any pool.
+double mean_over_tree(const KdTree& tree, const std::vector<std::uint32_t>& sample, parallel::ThreadPool* pool) {
+  std::vector<double> distance(sample.size());
+  parallel::for_blocks(pool, sample.size(), 512, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t s = begin; s < end; ++s) distance[s] = std::sqrt(tree.nearest_other_sq_dist(sample[s]));
+  });
   double sum = 0.0;
-  for (std::uint32_t i : sample) sum += std::sqrt(tree.nearest_other_sq_dist(i));
+  for (double d : distance) sum += d;
   return sum / static_cast<double>(sample.size());
 }
 
@@ -275,7 +280,7 @@ double mean_nearest_neighbour_distance(const PointList& points, std::size_t max_
   if (points.size() < 2) return 0.0;
   const std::vector<std::uint32_t> sample = spread_sample(points.size(), max_samples);
   if (points.size() > kGridFrom) return mean_over_grid(points, sample, pool, bounds);
-  return mean_over_tree(KdTree(points), sample);
+  return mean_over_tree(KdTree(points), sample, pool);
 }
 
 double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_samples, parallel::ThreadPool* pool) {
@@ -283,7 +288,7 @@ double mean_nearest_neighbour_distance(const KdTree& tree, std::size_t max_sampl
   if (points.size() < 2) return 0.0;
   const std::vector<std::uint32_t> sample = spread_sample(points.size(), max_samples);
   if (points.size() > kGridFrom) return mean_over_grid(points, sample, pool, nullptr);
-  return mean_over_tree(tree, sample);
+  return mean_over_tree(tree, sample, pool);
 }
 
 }  // namespace cloudshape::geometry

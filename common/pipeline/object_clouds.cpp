@@ -25,7 +25,7 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     PointList points;
     points.reserve(scene.objects[begin].size());
     for (std::uint32_t i : scene.objects[begin]) points.push_back(raw[i]);
-    done[begin] = preprocess_cloud(points, pre);
+    done[begin] = preprocess_cloud(points, pre, pool);
   });
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     PreprocessedCloud& p = done[k];

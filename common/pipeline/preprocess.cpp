@@ -51,7 +51,8 @@ PointList smooth_flat_regions(const PointList& points, std::size_t k, double max
   return out;
 }
 
-PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg) {
+PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg,
+                                   parallel::ThreadPool* pool) {
   PreprocessedCloud out;
   if (raw.empty()) return out;
   const geometry::Bounds bounds = geometry::bounding_box(raw);
@@ -94,7 +95,7 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
                               cfg.smoothing_max_curvature);
   if (!pts.empty()) {
     out.tree = std::make_shared<const geometry::KdTree>(PointList(pts));
-    out.resolution = geometry::mean_nearest_neighbour_distance(*out.tree);
+    out.resolution = geometry::mean_nearest_neighbour_distance(*out.tree, 4000, pool);
   }
   out.points = std::move(pts);
   return out;

@@ -8,6 +8,7 @@
 #include "config/stage_configs.hpp"
 #include "geometry/kdtree.hpp"
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::pipeline {
 
@@ -22,8 +23,10 @@ struct PreprocessedCloud {
 };
 
 // Non-finite points must have been dropped by the reader. Never throws on content:
-// too few points simply give a small (possibly empty) result.
-PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg);
+// too few points simply give a small (possibly empty) result. A `pool` shares the resolution's
+// searches out: the same result.
+PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg,
+                                   parallel::ThreadPool* pool = nullptr);
 
 // Statistical outlier removal: drops points whose mean distance to their k nearest
 // neighbours exceeds the cloud's mean by `stddev_factor` standard deviations.

@@ -194,5 +194,22 @@ TEST(Resolution, ATreeOverThePointsGivesTheListsValueExactly) {
   }
 }
 
+// The tree's searches in blocks on a pool, summed in sample order: the serial value, to the bit.
+TEST(Resolution, APoolGivesTheSameValue) {
+  std::mt19937_64 rng(6);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::size_t n : {500u, 9000u, 60000u}) {
+    PointList pts;
+    for (std::size_t i = 0; i < n; ++i) pts.emplace_back(u(rng), u(rng), 0.1 * u(rng));
+    const KdTree tree(pts);
+    const double serial = mean_nearest_neighbour_distance(tree);
+    for (std::size_t threads : {2u, 3u}) {
+      parallel::ThreadPool pool(threads);
+      EXPECT_EQ(mean_nearest_neighbour_distance(tree, 4000, &pool), serial) << n << " points, " << threads;
+      EXPECT_EQ(mean_nearest_neighbour_distance(pts, 4000, &pool), serial) << n << " points, " << threads;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cloudshape::geometry
