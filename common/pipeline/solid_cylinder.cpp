@@ -153,8 +153,8 @@ std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in) 
 }
 
 const std::optional<FittedSolid>& SolveInput::side_normals_cylinder() const {
-  if (!side_normals_cylinder_) side_normals_cylinder_ = fit_cylinder_from_side_normals(*this);
-  return *side_normals_cylinder_;
+  std::call_once(side_normals_cylinder_once_, [this] { side_normals_cylinder_ = fit_cylinder_from_side_normals(*this); });
+  return side_normals_cylinder_;
 }
 
 }  // namespace cloudshape::pipeline

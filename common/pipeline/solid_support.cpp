@@ -14,12 +14,12 @@
 namespace cloudshape::pipeline {
 
 const std::vector<detail::SurfaceSample>& SolveInput::cloud_normals() const {
-  if (!normals_) {
+  std::call_once(normals_once_, [this] {
     std::vector<std::uint32_t> all(cloud.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<std::uint32_t>(i);
     normals_ = detail::sample_normals(cloud, all, 1500, tree);
-  }
-  return *normals_;
+  });
+  return normals_;
 }
 
 std::optional<FittedSolid> fit_solid(Shape shape, const SolveInput& in) {

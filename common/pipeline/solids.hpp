@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -60,16 +61,19 @@ struct SolveInput {
   bool alone = false;
 
   // Normals over the whole cloud, estimated on first use and shared by the fitters that
-  // need them (cylinder and cone without a face to seed them).
+  // need them (cylinder and cone without a face to seed them). Fitters may run on several
+  // threads at once: the first to ask computes it, the others wait for it.
   const std::vector<detail::SurfaceSample>& cloud_normals() const;
 
-  // fit_cylinder_from_side_normals, fitted on first use: the frustum's side fit starts from it
-  // and the solver's second chance is it, on the same input.
+  // fit_cylinder_from_side_normals, fitted on first use (as cloud_normals): the frustum's side
+  // fit starts from it and the solver's second chance is it, on the same input.
   const std::optional<FittedSolid>& side_normals_cylinder() const;
 
  private:
-  mutable std::optional<std::vector<detail::SurfaceSample>> normals_;
-  mutable std::optional<std::optional<FittedSolid>> side_normals_cylinder_;
+  mutable std::once_flag normals_once_;
+  mutable std::vector<detail::SurfaceSample> normals_;
+  mutable std::once_flag side_normals_cylinder_once_;
+  mutable std::optional<FittedSolid> side_normals_cylinder_;
 };
 
 std::optional<FittedSolid> fit_box(const SolveInput& in);

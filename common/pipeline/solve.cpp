@@ -192,7 +192,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
                           const std::optional<Point>& viewpoint, std::size_t objects_in_cloud,
-                          std::uint32_t scan_lines) {
+                          std::uint32_t scan_lines, parallel::ThreadPool* pool) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -233,26 +233,35 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                            cfg.flat_face_min_fill, cfg.side_face_min_share, cfg.arc_max_scatter_cells,
                            cfg.arc_min_sagitta_cells, fills) <= cfg.curved_side_flat_share;
   };
-  // Each candidate's fit in candidate order (the order keeps ties); the frustum's last, and only
-  // where it can change the choice (detail::frustum_may_matter): it costs as much as the others.
+  // Each candidate's fit in its own slot, on the pool (the fits share only SolveInput's
+  // once-computed normals), then admitted and verified in candidate order (the order keeps ties);
+  // the frustum's last, and only where it can change the choice (detail::frustum_may_matter): it
+  // costs as much as the others.
   std::vector<std::optional<std::pair<FittedSolid, Verification>>> fit_of(candidates.size());
-  const auto fit_candidate = [&](std::size_t i) {
-    auto solid = fit_solid(candidates[i], input);
+  const auto admit = [&](std::size_t i, std::optional<FittedSolid>& solid) {
     if (!admissible(solid)) return;
     const Verification v =
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
     fit_of[i].emplace(std::move(*solid), v);
   };
+  std::vector<std::size_t> others;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (candidates[i] != Shape::frustum) fit_candidate(i);
+    if (candidates[i] != Shape::frustum) others.push_back(i);
   }
+  std::vector<std::optional<FittedSolid>> solid_of(candidates.size());
+  parallel::for_blocks(pool, others.size(), 1, [&](std::size_t begin, std::size_t) {
+    solid_of[others[begin]] = fit_solid(candidates[others[begin]], input);
+  });
+  for (std::size_t i : others) admit(i, solid_of[i]);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (candidates[i] != Shape::frustum) continue;
     std::vector<double> explained;
     for (const auto& f : fit_of) {
       if (f) explained.push_back(f->second.explained);
     }
-    if (detail::frustum_may_matter(explained, cfg.preferred_margin)) fit_candidate(i);
+    if (!detail::frustum_may_matter(explained, cfg.preferred_margin)) continue;
+    solid_of[i] = fit_solid(candidates[i], input);
+    admit(i, solid_of[i]);
   }
   for (auto& f : fit_of) {
     if (!f) continue;

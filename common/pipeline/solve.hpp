@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "config/stage_configs.hpp"
+#include "parallel/thread_pool.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
@@ -24,13 +25,14 @@ namespace cloudshape::pipeline {
 // alone (solid_prism.cpp: nothing beside it could have hidden that stretch of the cap).
 // `scan_lines`: the lidar scan lines the object lies on (0: not a lidar frame). Two lines are two
 // curves across the object: they fix a sphere (two circles of it) and no other solid, whose
-// extent between and beyond them they leave open; on two, only a sphere is tried.
+// extent between and beyond them they leave open; on two, only a sphere is tried. A `pool` fits
+// the candidates side by side: the same result.
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,
                           const geometry::KdTree* tree = nullptr,
                           const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1,
-                          std::uint32_t scan_lines = 0);
+                          std::uint32_t scan_lines = 0, parallel::ThreadPool* pool = nullptr);
 
 namespace detail {
 // Whether a frustum's fit can change which solid solve_object chooses among the others, given the

@@ -3,6 +3,7 @@
 // results also go out as ROS 2 Detection3DArray and MarkerArray (ros_results_output.hpp).
 #include "common/service.hpp"
 #include "dds/convert.hpp"
+#include "parallel/thread_pool.hpp"
 #include "pipeline/solve.hpp"
 #include "ros_results_output.hpp"
 
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
       argc, argv, "solver", "Solves dimensions and pose of the classified shape (classified -> result).");
   try {
     const cs::config::PipelineConfig cfg = cs::service::load_config(opt);
+    // execution.threads (or --threads): an object's candidate solids are fitted side by side.
+    cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
     cs::service::Extensions<cs::msg::ShapeResult> ros;
     ros.side_output = [&](cs::dds::Participant& p) {
       return std::make_unique<cs::service::RosResultsOutput>(p, cfg.ros2);
@@ -53,7 +56,7 @@ int main(int argc, char** argv) {
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::ObjectResult object = cs::pipeline::solve_object(
               points, seg, keypoints, cls, in.cloud().resolution(), cfg.solve, nullptr,
-              cs::dds::viewpoint_of(in.cloud()), in.header().object_count(), in.cloud().scan_lines());
+              cs::dds::viewpoint_of(in.cloud()), in.header().object_count(), in.cloud().scan_lines(), &pool);
           cs::msg::ShapeResult out = result_header(in);
           out.header().timings().solve_ms(cs::service::elapsed_ms(start));
           out.objects().push_back(cs::dds::to_msg(object));

@@ -118,5 +118,22 @@ TEST(Solve, OnTwoScanLinesOnlyASphereIsNamed) {
   expect_dimensions(ball, sphere.spec);
 }
 
+// With a pool the candidates are fitted side by side, sharing the once-computed normals: the
+// same solid, to the bit, as one after another.
+TEST(Solve, APoolGivesTheSameResult) {
+  parallel::ThreadPool pool(3);
+  for (const auto& s : {stage(synth::ShapeKind::box, {3.0, 2.0, 1.0}), stage(synth::ShapeKind::cylinder, {1.0, 3.0}),
+                        stage(synth::ShapeKind::cone, {1.0, 2.0}), stage(synth::ShapeKind::sphere, {1.5})}) {
+    const ObjectResult serial = solve(s);
+    const ObjectResult split = solve_object(s.pre.points, s.planes, s.keypoints, s.classification, s.pre.resolution,
+                                            config::SolveConfig{}, nullptr, std::nullopt, 1, 0, &pool);
+    ASSERT_EQ(split.shape, serial.shape);
+    EXPECT_EQ(split.dimensions, serial.dimensions) << serial.shape;
+    EXPECT_EQ(split.center, serial.center) << serial.shape;
+    EXPECT_EQ(split.axes, serial.axes) << serial.shape;
+    EXPECT_EQ(split.confidence, serial.confidence) << serial.shape;
+  }
+}
+
 }  // namespace
 }  // namespace cloudshape::pipeline
