@@ -216,9 +216,9 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   if (may_be_isolated && coarse > scene) {
     NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool);
     std::vector<char> none(trial.size(), 0);
-    std::size_t reaching = 0;
-    remove_structure(trial, cfg, none, pool, false, &reaching);
-    if (reaching == 0) {
+    bool reaches = false;
+    remove_structure(trial, cfg, none, pool, false, &reaches);
+    if (!reaches) {
       SceneSegmentation out = segment_graph(std::move(trial), true, points, grid, cfg, pool, view);
       if (isolated_whole(out, points.size(), cfg)) return out;
     }

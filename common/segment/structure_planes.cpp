@@ -240,9 +240,9 @@ bool encloses_viewer(const NeighbourGraph& g, const std::vector<std::uint32_t>& 
 
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const config::SegmentConfig& cfg,
                                              std::vector<char>& removed, parallel::ThreadPool* pool,
-                                             bool from_inside, std::size_t* reaching) {
+                                             bool from_inside, bool* reaches) {
   std::vector<StructurePlane> found;
-  if (reaching != nullptr) *reaching = 0;
+  if (reaches != nullptr) *reaches = false;
   std::mt19937_64 rng(static_cast<std::uint64_t>(cfg.seed));
   std::vector<char> tried(g.size(), 0);  // inliers of a plane that proved to be no structure
   const double min_nodes = cfg.structure_min_share * static_cast<double>(g.size());
@@ -295,7 +295,10 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
       continue;
     }
-    if (reaching != nullptr && ratio >= cfg.structure_reach) ++*reaching;
+    if (reaches != nullptr && ratio >= cfg.structure_reach) {
+      *reaches = true;
+      return found;
+    }
     // Every node in the plane's band, its connected part or not: the table beyond an object's shadow
     // is cut off from the part in front of it, and still shows where the table reaches.
     const double min_cos = std::cos(cfg.structure_normal_degrees * kPi / 180.0);

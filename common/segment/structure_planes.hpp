@@ -33,10 +33,11 @@ struct StructurePlane {
 // too, and all its nodes in the band go with it (a wall's parts between windows too); a part apart
 // from the plane's connected one only within the noise the connected one shows (a ball on the
 // ground rises above it).
-// `reaching`, if given, counts the planes tried that reach cfg.structure_reach times beyond what
-// stands on them, structure or not: none means the graph holds no candidate support at all.
+// `reaches`, if given, is set when a plane tried reaches cfg.structure_reach times beyond what
+// stands on it, structure or not, and the search stops there: the caller asks only whether the
+// graph holds a candidate support at all (the planes returned are then not all there are).
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& graph, const config::SegmentConfig& cfg,
                                              std::vector<char>& removed, parallel::ThreadPool* pool = nullptr,
-                                             bool from_inside = false, std::size_t* reaching = nullptr);
+                                             bool from_inside = false, bool* reaches = nullptr);
 
 }  // namespace cloudshape::segment
