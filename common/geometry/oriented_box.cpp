@@ -13,24 +13,57 @@ namespace {
 
 using Vec2 = Eigen::Vector2d;
 
-// The direction (unit, in the plane) of the minimum-area rectangle's first side: one side
-// of the smallest enclosing rectangle always lies along a hull edge.
-Vec2 min_area_direction(const std::vector<Vec2>& hull) {
-  Vec2 best = Vec2::UnitX();
-  double best_area = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < hull.size(); ++i) {
-    const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
-    if (!(e.norm() > 0.0)) continue;
-    const Vec2 u = e.normalized(), v(-u.y(), u.x());
-    double ulo = HUGE_VAL, uhi = -HUGE_VAL, vlo = HUGE_VAL, vhi = -HUGE_VAL;
-    for (const Vec2& q : hull) {
-      ulo = std::min(ulo, q.dot(u)), uhi = std::max(uhi, q.dot(u));
-      vlo = std::min(vlo, q.dot(v)), vhi = std::max(vhi, q.dot(v));
-    }
-    const double area = (uhi - ulo) * (vhi - vlo);
-    if (area < best_area) best_area = area, best = u;
+// Edge i of a closed polygon as a rectangle's first side: its unit direction u and the normal v
+// turned from it counter-clockwise; none for an edge of no length.
+bool edge_frame(const std::vector<Vec2>& hull, std::size_t i, Vec2& u, Vec2& v) {
+  const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
+  if (!(e.norm() > 0.0)) return false;
+  u = e.normalized();
+  v = Vec2(-u.y(), u.x());
+  return true;
+}
+
+// The area of the rectangle along u and v round every hull point.
+double rectangle_area(const std::vector<Vec2>& hull, const Vec2& u, const Vec2& v) {
+  double ulo = HUGE_VAL, uhi = -HUGE_VAL, vlo = HUGE_VAL, vhi = -HUGE_VAL;
+  for (const Vec2& q : hull) {
+    ulo = std::min(ulo, q.dot(u)), uhi = std::max(uhi, q.dot(u));
+    vlo = std::min(vlo, q.dot(v)), vhi = std::max(vhi, q.dot(v));
   }
-  return best;
+  return (uhi - ulo) * (vhi - vlo);
+}
+
+// Each edge's rectangle_area from four extreme points only, found by rotating calipers: each
+// moves on round the polygon while the next point lies at least as far out. The extremes are
+// some of the points, so no width exceeds the true one, and (rounding is monotone) no area
+// either: a lower bound of each edge's area, equal to it on a convex polygon but for rounding.
+// NaN for an edge of no length.
+std::vector<double> caliper_areas(const std::vector<Vec2>& hull) {
+  const std::size_t n = hull.size();
+  std::vector<double> lower(n, std::numeric_limits<double>::quiet_NaN());
+  std::array<std::size_t, 4> at{};  // the points farthest along u, -u, v, -v
+  bool placed = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    Vec2 u = Vec2::UnitX(), v = Vec2::UnitY();
+    if (!edge_frame(hull, i, u, v)) continue;
+    const std::array<Vec2, 4> along{u, Vec2(-u), v, Vec2(-v)};
+    for (int k = 0; k < 4; ++k) {
+      if (!placed) {
+        for (std::size_t j = 1; j < n; ++j) {
+          if (hull[j].dot(along[k]) > hull[at[k]].dot(along[k])) at[k] = j;
+        }
+      }
+      for (std::size_t steps = 0; steps < n && hull[(at[k] + 1) % n].dot(along[k]) >= hull[at[k]].dot(along[k]);
+           ++steps) {
+        at[k] = (at[k] + 1) % n;
+      }
+    }
+    placed = true;
+    const double width_u = std::max(0.0, hull[at[0]].dot(u) - hull[at[1]].dot(u));
+    const double width_v = std::max(0.0, hull[at[2]].dot(v) - hull[at[3]].dot(v));
+    lower[i] = width_u * width_v;
+  }
+  return lower;
 }
 
 Eigen::Matrix3d orthonormal_rows(const Eigen::Matrix3d& m) {
@@ -75,7 +108,7 @@ Eigen::Matrix3d rectangle_frame(const PointList& points, const Eigen::Matrix3d& 
   std::vector<Vec2> projected;
   projected.reserve(points.size());
   for (const Point& p : points) projected.emplace_back(p.dot(e1), p.dot(e2));
-  const Vec2 d = min_area_direction(convex_hull_2d(hull_candidates(projected)));
+  const Vec2 d = detail::min_area_direction(convex_hull_2d(hull_candidates(projected)));
   Eigen::Matrix3d f;
   f.row(0) = (d.x() * e1 + d.y() * e2).transpose();
   f.row(1) = up.cross(f.row(0).transpose()).transpose();
@@ -122,5 +155,40 @@ OrientedBox oriented_bounding_box(const PointList& points, const std::vector<Eig
   }
   return sorted(box_in_frame(points, best_frame));
 }
+
+namespace detail {
+
+// One side of the smallest enclosing rectangle always lies along a hull edge. The areas are
+// those of every point, as a scan of every edge gives them, but worked out only for the edges
+// whose caliper bound is at most the least area so far (in increasing order of bound): any other
+// is larger than the least. So the same edge as that scan, in O(n log n) instead of O(n^2).
+Eigen::Vector2d min_area_direction(const std::vector<Eigen::Vector2d>& hull) {
+  const std::vector<double> lower = caliper_areas(hull);
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    if (!std::isnan(lower[i])) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return lower[a] < lower[b]; });
+  std::vector<double> area(hull.size(), std::numeric_limits<double>::quiet_NaN());
+  double least = HUGE_VAL;
+  for (std::size_t i : order) {
+    if (lower[i] > least) break;
+    Vec2 u = Vec2::UnitX(), v = Vec2::UnitY();
+    edge_frame(hull, i, u, v);
+    area[i] = rectangle_area(hull, u, v);
+    least = std::min(least, area[i]);
+  }
+  Vec2 best = Vec2::UnitX();
+  double best_area = HUGE_VAL;
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    if (!(area[i] < best_area)) continue;
+    Vec2 v = Vec2::UnitY();
+    edge_frame(hull, i, best, v);
+    best_area = area[i];
+  }
+  return best;
+}
+
+}  // namespace detail
 
 }  // namespace cloudshape::geometry

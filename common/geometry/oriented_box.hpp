@@ -24,4 +24,11 @@ OrientedBox oriented_bounding_box(const PointList& points,
                                   const std::vector<Eigen::Matrix3d>& hints = {},
                                   std::size_t hull_samples = 2000);
 
+namespace detail {
+// The unit direction of the first side of the minimum-area rectangle round `hull` (a convex
+// polygon, counter-clockwise): the first of its edges whose rectangle round every vertex has the
+// least area (UnitX if none has a finite one).
+Eigen::Vector2d min_area_direction(const std::vector<Eigen::Vector2d>& hull);
+}  // namespace detail
+
 }  // namespace cloudshape::geometry
