@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cmath>
 #include <optional>
 
@@ -61,14 +62,17 @@ bool in_dense(const std::array<std::int64_t, 3>& c, const std::array<std::uint64
 
 }  // namespace
 
-Bounds bounding_box(const PointList& points, std::size_t stride) {
+namespace {
+
+// bounding_box's fold over points[begin], points[begin + stride], ... before `end`, from the
+// first of them.
+Bounds bounds_of_range(const PointList& points, std::size_t begin, std::size_t end, std::size_t stride) {
   Bounds b;
-  if (points.empty()) return b;
   // x and y as one packet, z alone: what cwiseMin and cwiseMax of whole points give (std::min's
   // operand order both ways, signed zeros included), without Eigen's unaligned tail per point.
-  Eigen::Vector2d lo_xy = points.front().head<2>(), hi_xy = lo_xy;
-  double lo_z = points.front().z(), hi_z = lo_z;
-  for (std::size_t i = 0; i < points.size(); i += stride) {
+  Eigen::Vector2d lo_xy = points[begin].head<2>(), hi_xy = lo_xy;
+  double lo_z = points[begin].z(), hi_z = lo_z;
+  for (std::size_t i = begin; i < end; i += stride) {
     const Point& p = points[i];
     lo_xy = lo_xy.cwiseMin(p.head<2>());
     hi_xy = hi_xy.cwiseMax(p.head<2>());
@@ -77,6 +81,29 @@ Bounds bounding_box(const PointList& points, std::size_t stride) {
   }
   b.min = Point(lo_xy.x(), lo_xy.y(), lo_z);
   b.max = Point(hi_xy.x(), hi_xy.y(), hi_z);
+  return b;
+}
+
+// Sampled points a block of the parallel fold takes.
+constexpr std::size_t kBoundsBlock = std::size_t{1} << 17;
+
+}  // namespace
+
+Bounds bounding_box(const PointList& points, std::size_t stride, parallel::ThreadPool* pool) {
+  if (points.empty()) return Bounds{};
+  const std::size_t sampled = (points.size() - 1) / stride + 1;
+  if (pool == nullptr || sampled <= kBoundsBlock) return bounds_of_range(points, 0, points.size(), stride);
+  // Each block's fold keeps the first least and greatest value it meets (the operand order
+  // above), and so does the fold of the blocks' results in block order: the serial answer.
+  std::vector<Bounds> block((sampled + kBoundsBlock - 1) / kBoundsBlock);
+  parallel::for_blocks(pool, sampled, kBoundsBlock, [&](std::size_t first, std::size_t last) {
+    block[first / kBoundsBlock] = bounds_of_range(points, first * stride, std::min(points.size(), last * stride), stride);
+  });
+  Bounds b = block.front();
+  for (std::size_t k = 1; k < block.size(); ++k) {
+    b.min = b.min.cwiseMin(block[k].min);
+    b.max = b.max.cwiseMax(block[k].max);
+  }
   return b;
 }
 
@@ -199,10 +226,10 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
 }
 
 std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds,
-                                  std::size_t stride) {
+                                  std::size_t stride, parallel::ThreadPool* pool) {
   const std::size_t n = points.empty() ? 0 : (points.size() - 1) / stride + 1;
   if (!(voxel_size > 0.0) || points.empty()) return n;
-  const Bounds b = bounds ? *bounds : bounding_box(points, stride);
+  const Bounds b = bounds ? *bounds : bounding_box(points, stride, pool);
   const double inv = 1.0 / voxel_size;
   // The same keys and the same validity as voxel_grid_downsample's.
   if (!grid_fits(b, inv)) return n;
@@ -212,24 +239,35 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   std::uint64_t occupied = 0;
   if (dims[0] > 0) {
     const std::uint64_t cells = dims[0] * dims[1] * dims[2];
-    std::vector<std::uint64_t> bits((cells + 63) / 64, 0);
-    bool inside = true;
-    for (std::size_t i = 0; i < points.size(); i += stride) {
-      const auto c = voxel_of(points[i]);
-      if (!in_dense(c, dims, 0)) {
-        inside = false;
-        break;
+    // A large cloud's points in one part per thread, each setting the bits of its own array; the
+    // occupied voxels are the bits of their union, whatever the parts.
+    const std::size_t parts = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
+    std::vector<std::vector<std::uint64_t>> bits(parts);
+    std::vector<char> inside(parts, 1);
+    const std::size_t per_part = (n + parts - 1) / parts;
+    parallel::for_blocks(pool, n, per_part, [&](std::size_t first, std::size_t last) {
+      std::vector<std::uint64_t>& own = bits[first / per_part];
+      own.assign((cells + 63) / 64, 0);
+      for (std::size_t s = first; s < last; ++s) {
+        const auto c = voxel_of(points[s * stride]);
+        if (!in_dense(c, dims, 0)) {
+          inside[first / per_part] = 0;
+          return;
+        }
+        const std::uint64_t cell =
+            (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) * dims[2] +
+            static_cast<std::uint64_t>(c[2]);
+        own[cell >> 6] |= std::uint64_t{1} << (cell & 63);
       }
-      const std::uint64_t cell =
-          (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) * dims[2] +
-          static_cast<std::uint64_t>(c[2]);
-      std::uint64_t& word = bits[cell >> 6];
-      const std::uint64_t bit = std::uint64_t{1} << (cell & 63);
-      occupied += (word & bit) == 0 ? 1 : 0;
-      word |= bit;
+    });
+    if (std::find(inside.begin(), inside.end(), 0) == inside.end()) {
+      for (std::size_t w = 0; w < bits.front().size(); ++w) {
+        std::uint64_t word = 0;
+        for (const auto& own : bits) word |= own[w];
+        occupied += std::bitset<64>(word).count();
+      }
+      return occupied;
     }
-    if (inside) return occupied;
-    occupied = 0;
   }
   // Room for a voxel per point: the finest voxel of a search often holds one or two points, and
   // a map that grows rehashes every key it has.

@@ -15,7 +15,8 @@ struct Bounds {
   double diagonal() const { return (max - min).norm(); }
 };
 // Over points[0], points[stride], points[2 * stride], ... (a strided subsample, not copied).
-Bounds bounding_box(const PointList& points, std::size_t stride = 1);
+// A `pool` folds blocks of a large cloud side by side: the same bounds.
+Bounds bounding_box(const PointList& points, std::size_t stride = 1, parallel::ThreadPool* pool = nullptr);
 
 // Replaces the points of each cubic voxel of edge `voxel_size` by their centroid.
 // voxel_size <= 0 returns the input unchanged. With min_occupied_neighbours > 0, voxels
@@ -30,8 +31,9 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
 // voxel_grid_downsample(points, voxel_size).size() without building the points: for searches
 // of the voxel size that only count (`bounds` as above). With a `stride`, of the subsample
 // points[0], points[stride], ... (`bounds` then bounding_box(points, stride)).
+// A `pool` counts a large cloud's parts side by side: the same count.
 std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds = nullptr,
-                                  std::size_t stride = 1);
+                                  std::size_t stride = 1, parallel::ThreadPool* pool = nullptr);
 
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.

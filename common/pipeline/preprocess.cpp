@@ -55,7 +55,7 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
                                    parallel::ThreadPool* pool) {
   PreprocessedCloud out;
   if (raw.empty()) return out;
-  const geometry::Bounds bounds = geometry::bounding_box(raw);
+  const geometry::Bounds bounds = geometry::bounding_box(raw, 1, pool);
   const double diagonal = bounds.diagonal();
   double voxel = cfg.voxel_divisions > 0.0 ? diagonal / cfg.voxel_divisions : 0.0;
   const int min_neighbours = static_cast<int>(cfg.isolated_voxel_neighbours);
@@ -66,9 +66,9 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   // whole cloud is usually gridded once.
   if (cfg.max_points > 0 && raw.size() > budget) {
     const std::size_t stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
-    const geometry::Bounds sparse_bounds = geometry::bounding_box(raw, stride);
+    const geometry::Bounds sparse_bounds = geometry::bounding_box(raw, stride, pool);
     for (int attempt = 0; attempt < 4; ++attempt) {
-      const std::size_t n = geometry::count_occupied_voxels(raw, voxel, &sparse_bounds, stride);
+      const std::size_t n = geometry::count_occupied_voxels(raw, voxel, &sparse_bounds, stride, pool);
       if (n <= budget) break;
       voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
               std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;

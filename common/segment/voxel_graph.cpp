@@ -67,7 +67,7 @@ std::pair<double, double> budgets_in(const PointList& points, const geometry::Bo
   const double finest = finest_in(points, box, pool);
   const double nodes = static_cast<double>(std::max<std::int64_t>(1, cfg.target_nodes));
   const double scene = std::max(box.diagonal() / std::sqrt(nodes), finest);
-  const double occupied = static_cast<double>(geometry::count_occupied_voxels(points, scene, &box));
+  const double occupied = static_cast<double>(geometry::count_occupied_voxels(points, scene, &box, 1, pool));
   const auto for_target = [&](std::int64_t target) {
     return scene * std::max(1.0, std::sqrt(occupied / static_cast<double>(std::max<std::int64_t>(1, target))));
   };
@@ -88,17 +88,17 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
 }  // namespace
 
 double finest_voxel(const PointList& points, parallel::ThreadPool* pool) {
-  return points.empty() ? 0.0 : finest_in(points, geometry::bounding_box(points), pool);
+  return points.empty() ? 0.0 : finest_in(points, geometry::bounding_box(points, 1, pool), pool);
 }
 
 double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
-  return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points), cfg, pool);
+  return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points, 1, pool), cfg, pool);
 }
 
 std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
                                         parallel::ThreadPool* pool) {
   return points.empty() ? std::pair<double, double>{0.0, 0.0}
-                        : budgets_in(points, geometry::bounding_box(points), cfg, fewer, pool);
+                        : budgets_in(points, geometry::bounding_box(points, 1, pool), cfg, fewer, pool);
 }
 
 // One bounding box for the budget, its resolution bound and the binning; target_nodes stays the
@@ -106,7 +106,7 @@ std::pair<double, double> budget_voxels(const PointList& points, const config::S
 NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentConfig& cfg,
                                  parallel::ThreadPool* pool) {
   if (points.empty()) return build_voxel_graph(points, 0.0, cfg.target_nodes, cfg, pool);
-  const geometry::Bounds box = geometry::bounding_box(points);
+  const geometry::Bounds box = geometry::bounding_box(points, 1, pool);
   return build_in(points, box, budget_in(points, box, cfg, pool), cfg.target_nodes, cfg, pool);
 }
 
@@ -117,7 +117,7 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
     g.adjacency_begin.assign(1, 0);
     return g;
   }
-  return build_in(points, geometry::bounding_box(points), voxel, max_nodes, cfg, pool);
+  return build_in(points, geometry::bounding_box(points, 1, pool), voxel, max_nodes, cfg, pool);
 }
 
 namespace {

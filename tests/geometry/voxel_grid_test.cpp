@@ -9,6 +9,7 @@
 
 #include "geometry/kdtree.hpp"
 #include "geometry/voxel_grid.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 namespace {
@@ -175,6 +176,40 @@ TEST(VoxelGrid, TheBoundingBoxIsEigensToTheBit) {
   }
   EXPECT_EQ(b.min, lo);
   EXPECT_EQ(b.max, hi);
+}
+
+// A pool folds blocks of a large cloud's bounds side by side and counts its parts' voxels in
+// arrays of their own: the serial box to the bit (signed zeros in ties too) and the same count,
+// strided or not, for the hash map's fall-back too.
+TEST(VoxelGrid, APoolGivesTheSameBoxAndCount) {
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PointList pts;
+  for (int i = 0; i < 700000; ++i) {
+    pts.emplace_back(u(rng), 0.5 * u(rng), i % 5 == 0 ? (i % 2 ? 0.0 : -0.0) : 0.1 * u(rng));
+  }
+  pts[400000] = Point(-1.5, -0.0, 0.0);
+  pts[650000] = Point(-1.5, 0.0, -0.0);
+  for (std::size_t threads : {2u, 3u}) {
+    parallel::ThreadPool pool(threads);
+    for (std::size_t stride : {1u, 3u}) {
+      const Bounds serial = bounding_box(pts, stride), split = bounding_box(pts, stride, &pool);
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_EQ(std::signbit(split.min[a]), std::signbit(serial.min[a])) << threads << " " << stride;
+        EXPECT_EQ(std::signbit(split.max[a]), std::signbit(serial.max[a])) << threads << " " << stride;
+      }
+      EXPECT_EQ(split.min, serial.min);
+      EXPECT_EQ(split.max, serial.max);
+      for (double voxel : {0.01, 0.2}) {
+        EXPECT_EQ(count_occupied_voxels(pts, voxel, nullptr, stride, &pool), count_occupied_voxels(pts, voxel, nullptr, stride))
+            << threads << " threads, stride " << stride << ", voxel " << voxel;
+      }
+    }
+    Bounds wrong;
+    wrong.min = Point(-3.0, -3.0, -3.0);
+    wrong.max = Point(-2.9, -2.9, -2.9);
+    EXPECT_EQ(count_occupied_voxels(pts, 0.05, &wrong, 1, &pool), count_occupied_voxels(pts, 0.05, &wrong));
+  }
 }
 
 TEST(Resolution, MeanNearestNeighbourOfARegularGrid) {
