@@ -122,6 +122,9 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
 
 namespace {
 
+// Points from which build_in works out their cells on the pool before numbering the voxels.
+constexpr std::size_t kPackedFrom = 200000;
+
 // A voxel's node: an array over the bounding box's voxels where that holds at most
 // kArrayVoxelsPerPoint a point (an index instead of a hash), else the hash map of packed keys
 // (21 bits an axis). The same nodes either way: the array only where no coordinate reaches 21 bits.
@@ -206,13 +209,35 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
                                        static_cast<std::int64_t>(c.z())};
   };
   // Node ids in order of first appearance; each point's node kept from the pass that found them.
+  // A large cloud's cells are worked out first, in blocks on the pool (packed as the map's keys,
+  // lossless below 2^21 a coordinate; otherwise each point's as it comes).
   std::vector<Key> keys;
   std::vector<std::uint32_t> node;
+  std::vector<Key> packed;
+  const auto pack_cells = [&](double v) {
+    constexpr std::size_t kPointsPerBlock = 65536;
+    packed.resize(points.size());
+    std::vector<char> fits((points.size() + kPointsPerBlock - 1) / kPointsPerBlock, 1);
+    parallel::for_blocks(pool, points.size(), kPointsPerBlock, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const auto c = cell_of(points[i], v);
+        if (static_cast<std::uint64_t>(c[0] | c[1] | c[2]) >= (std::uint64_t{1} << 21)) {
+          fits[begin / kPointsPerBlock] = 0;
+          return;
+        }
+        packed[i] = VoxelNodes::key(c);
+      }
+    });
+    if (std::find(fits.begin(), fits.end(), 0) != fits.end()) packed.clear();
+  };
   const auto bin_in = [&](double v, VoxelNodes& voxels) {
     keys.clear();
     node.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto c = cell_of(points[i], v);
+      const auto c = packed.empty() ? cell_of(points[i], v)
+                                    : std::array<std::int64_t, 3>{static_cast<std::int64_t>(packed[i] >> 42),
+                                                                  static_cast<std::int64_t>((packed[i] >> 21) & 0x1FFFFF),
+                                                                  static_cast<std::int64_t>(packed[i] & 0x1FFFFF)};
       bool inserted = false;
       node[i] = voxels.find_or_insert(c, static_cast<std::uint32_t>(keys.size()), inserted);
       if (node[i] == VoxelNodes::kOutside) return false;
@@ -224,6 +249,8 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
     return true;
   };
   const auto bin = [&](double v) {
+    packed.clear();
+    if (pool != nullptr && pool->size() > 1 && points.size() >= kPackedFrom) pack_cells(v);
     const std::size_t expected = std::min<std::size_t>(points.size(), static_cast<std::size_t>(cap) + 1);
     VoxelNodes voxels((box.max - box.min) / v, points.size(), expected);
     if (!bin_in(v, voxels)) {

@@ -14,6 +14,7 @@
 #include "geometry/pca.hpp"
 #include "geometry/voxel_grid.hpp"
 #include "segment/detail/graph_moments.hpp"
+#include "parallel/thread_pool.hpp"
 #include "segment/neighbour_graph.hpp"
 #include "box_surface.hpp"
 
@@ -153,6 +154,23 @@ TEST(SegmentVoxelGraph, TheVoxelArrayAndTheMapGiveTheSameGraph) {
     in_array.for_neighbours(n, [&](std::uint32_t m) { a.push_back(m); });
     in_map.for_neighbours(n, [&](std::uint32_t m) { b.push_back(m); });
     EXPECT_EQ(a, b) << "node " << n;
+  }
+}
+
+// A large cloud's cells are worked out on the pool before the voxels are numbered: the same
+// graph as without one, node for node.
+TEST(SegmentVoxelGraph, APoolGivesTheSameGraph) {
+  const config::SegmentConfig cfg;
+  const PointList pts = tilted_box(250000, 6);
+  const NeighbourGraph serial = build_voxel_graph(pts, cfg);
+  for (std::size_t threads : {2u, 3u}) {
+    parallel::ThreadPool pool(threads);
+    const NeighbourGraph split = build_voxel_graph(pts, cfg, &pool);
+    ASSERT_EQ(split.size(), serial.size()) << threads;
+    EXPECT_EQ(split.node_of_point, serial.node_of_point) << threads;
+    EXPECT_EQ(split.nodes, serial.nodes) << threads;
+    EXPECT_EQ(split.normals, serial.normals) << threads;
+    EXPECT_EQ(split.adjacency, serial.adjacency) << threads;
   }
 }
 
