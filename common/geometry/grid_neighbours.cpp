@@ -36,15 +36,38 @@ double squared_distance(const Point& a, const Point& b) {
   return d2;
 }
 
+// Cubic cells of edge `cell` from `min`: a point's cell coordinates, with one cell of margin
+// below, and how far it lies at least from any point beyond the cells round its own.
+struct CellFrame {
+  Point min = Point::Zero();
+  double cell = 0.0;
+  double inv = 0.0;
+
+  std::array<std::int64_t, 3> coords(const Point& p) const {
+    const Eigen::Vector3d q = (p - min) * inv;
+    return {static_cast<std::int64_t>(q.x()) + 1, static_cast<std::int64_t>(q.y()) + 1,
+            static_cast<std::int64_t>(q.z()) + 1};
+  }
+
+  // How far p is, at least, from any point outside the block of cells within `ring` of its own.
+  double reach(const Point& p, std::int64_t ring) const {
+    const Eigen::Vector3d q = (p - min) * inv;
+    double margin = 1.0;
+    for (int a = 0; a < 3; ++a) {
+      const double f = q[a] - std::floor(q[a]);
+      margin = std::min({margin, f, 1.0 - f});
+    }
+    return std::max(0.0, margin + static_cast<double>(ring) - kSlack) * cell;
+  }
+};
+
 // The points binned into cubic cells: the members of each occupied cell in increasing index.
 class Grid {
  public:
   Grid(const PointList& points, const Bounds& b, double cell) : map_(points.size() / 4 + 16) {
-    origin_ = b.min;
-    cell_ = cell;
-    inv_ = 1.0 / cell;
-    const Eigen::Vector3d extent = (b.max - b.min) * inv_;
-    valid_ = cell > 0.0 && std::isfinite(inv_) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
+    frame_ = CellFrame{b.min, cell, 1.0 / cell};
+    const Eigen::Vector3d extent = (b.max - b.min) * frame_.inv;
+    valid_ = cell > 0.0 && std::isfinite(frame_.inv) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
     if (!valid_) return;
     cell_of_.resize(points.size());
     std::vector<std::uint32_t> count;
@@ -67,22 +90,8 @@ class Grid {
   bool valid() const { return valid_; }
   std::size_t cells() const { return begin_.empty() ? 0 : begin_.size() - 1; }
 
-  std::array<std::int64_t, 3> coords(const Point& p) const {
-    const Eigen::Vector3d q = (p - origin_) * inv_;
-    return {static_cast<std::int64_t>(q.x()) + 1, static_cast<std::int64_t>(q.y()) + 1,
-            static_cast<std::int64_t>(q.z()) + 1};
-  }
-
-  // How far p is, at least, from any point outside the block of cells within `ring` of its own.
-  double reach(const Point& p, std::int64_t ring) const {
-    const Eigen::Vector3d q = (p - origin_) * inv_;
-    double margin = 1.0;
-    for (int a = 0; a < 3; ++a) {
-      const double f = q[a] - std::floor(q[a]);
-      margin = std::min({margin, f, 1.0 - f});
-    }
-    return std::max(0.0, margin + static_cast<double>(ring) - kSlack) * cell_;
-  }
+  std::array<std::int64_t, 3> coords(const Point& p) const { return frame_.coords(p); }
+  double reach(const Point& p, std::int64_t ring) const { return frame_.reach(p, ring); }
 
   // Calls f(member index) for every point in the cells exactly `ring` cells (Chebyshev) from c.
   template <class F>
@@ -107,9 +116,7 @@ class Grid {
 
  private:
   detail::CellMap map_;
-  Point origin_ = Point::Zero();
-  double cell_ = 0.0;
-  double inv_ = 0.0;
+  CellFrame frame_;
   bool valid_ = false;
   std::vector<std::uint32_t> cell_of_;
   std::vector<std::uint32_t> begin_;
@@ -168,28 +175,17 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
   return false;
 }
 
-// A point's cell, with one cell of margin below (nearest_other_distances' grid).
-struct CellCoords {
-  Point min;
-  double inv;
-  std::array<std::int64_t, 3> operator()(const Point& p) const {
-    const Eigen::Vector3d c = (p - min) * inv;
-    return {static_cast<std::int64_t>(c.x()) + 1, static_cast<std::int64_t>(c.y()) + 1,
-            static_cast<std::int64_t>(c.z()) + 1};
-  }
-};
-
 // The least squared distance from each query to another point of its 27-cell block (infinity if
 // none): the cells of the queries' blocks in a map, each with the queries it serves, then one pass
 // over the points, a lookup each, instead of binning them all.
 std::vector<double> nearest_in_blocks(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                      const CellCoords& coords, parallel::ThreadPool* pool) {
+                                      const CellFrame& frame, parallel::ThreadPool* pool) {
   detail::CellMap blocks(queries.size() * 27);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
   pairs.reserve(queries.size() * 27);
   std::uint32_t block_cells = 0;
   for (std::size_t q = 0; q < queries.size(); ++q) {
-    const auto c = coords(points[queries[q]]);
+    const auto c = frame.coords(points[queries[q]]);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
@@ -213,7 +209,7 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
     std::vector<double>& best = best_of_block[begin / kPointsPerBlock];
     best.assign(queries.size(), std::numeric_limits<double>::infinity());
     for (std::size_t i = begin; i < end; ++i) {
-      const auto c = coords(points[i]);
+      const auto c = frame.coords(points[i]);
       const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
       if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
@@ -240,7 +236,7 @@ constexpr double kArrayCellsPerPoint = 4.0;
 // outside it (`extent`, in cells, is not that of the points' bounds).
 std::optional<std::vector<double>> nearest_in_cell_array(const PointList& points,
                                                          const std::vector<std::uint32_t>& queries,
-                                                         const CellCoords& coords, const Eigen::Vector3d& extent,
+                                                         const CellFrame& frame, const Eigen::Vector3d& extent,
                                                          parallel::ThreadPool* pool) {
   std::array<std::int64_t, 3> dims{};
   double cells = 1.0;
@@ -261,7 +257,7 @@ std::optional<std::vector<double>> nearest_in_cell_array(const PointList& points
   std::vector<std::uint32_t> cell_of(points.size());
   std::vector<std::uint32_t> begin(static_cast<std::size_t>(cells) + 1, 0);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const auto c = coords(points[i]);
+    const auto c = frame.coords(points[i]);
     if (!inside(c, 0)) return std::nullopt;
     cell_of[i] = static_cast<std::uint32_t>(index(c));
     ++begin[cell_of[i] + 1];
@@ -273,18 +269,18 @@ std::optional<std::vector<double>> nearest_in_cell_array(const PointList& points
     for (std::size_t i = 0; i < points.size(); ++i) members[next[cell_of[i]]++] = static_cast<std::uint32_t>(i);
   }
   for (std::uint32_t q : queries) {
-    if (!inside(coords(points[q]), 1)) return std::nullopt;
+    if (!inside(frame.coords(points[q]), 1)) return std::nullopt;
   }
   std::vector<double> best(queries.size(), std::numeric_limits<double>::infinity());
-  const double cell = 1.0 / coords.inv;
+  const double cell = frame.cell;
   parallel::for_blocks(pool, queries.size(), 256, [&](std::size_t first, std::size_t last) {
     for (std::size_t q = first; q < last; ++q) {
       const std::uint32_t i = queries[q];
       const Point& p = points[i];
-      const auto c = coords(p);
+      const auto c = frame.coords(p);
       // The squared distance to the cell's lower side, none, and to its upper side along each
       // axis (less kSlack cells): by neighbour offset -1, 0, +1.
-      const Eigen::Vector3d u = (p - coords.min) * coords.inv;
+      const Eigen::Vector3d u = (p - frame.min) * frame.inv;
       std::array<std::array<double, 3>, 3> side{};
       for (int a = 0; a < 3; ++a) {
         const double below = u[a] - std::floor(u[a]);
@@ -333,17 +329,11 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
   if (!valid) {
     for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
   } else {
-    const CellCoords coords{box.min, inv};
-    std::optional<std::vector<double>> in_array = nearest_in_cell_array(points, queries, coords, extent, pool);
-    const std::vector<double> best = in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, coords, pool);
+    const CellFrame frame{box.min, cell, inv};
+    std::optional<std::vector<double>> in_array = nearest_in_cell_array(points, queries, frame, extent, pool);
+    const std::vector<double> best = in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, frame, pool);
     for (std::size_t q = 0; q < queries.size(); ++q) {
-      const Eigen::Vector3d u = (points[queries[q]] - box.min) * inv;
-      double margin = 1.0;
-      for (int a = 0; a < 3; ++a) {
-        const double f = u[a] - std::floor(u[a]);
-        margin = std::min({margin, f, 1.0 - f});
-      }
-      const double reach = std::max(0.0, margin + 1.0 - kSlack) * cell;
+      const double reach = frame.reach(points[queries[q]], 1);
       if (best[q] <= reach * reach) {
         out[q] = std::sqrt(best[q]);
       } else {
