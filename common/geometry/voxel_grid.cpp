@@ -60,10 +60,6 @@ bool in_dense(const std::array<std::int64_t, 3>& c, const std::array<std::uint64
   return true;
 }
 
-}  // namespace
-
-namespace {
-
 // bounding_box's fold over points[begin], points[begin + stride], ... before `end`, from the
 // first of them.
 Bounds bounds_of_range(const PointList& points, std::size_t begin, std::size_t end, std::size_t stride) {
@@ -241,26 +237,38 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
     const std::uint64_t cells = dims[0] * dims[1] * dims[2];
     // A large cloud's points in one part per thread, each setting the bits of its own array; the
     // occupied voxels are the bits of their union, whatever the parts.
-    const std::size_t parts = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
+    const std::size_t threads = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
+    const std::size_t per_part = (n + threads - 1) / threads;
+    const std::size_t parts = (n + per_part - 1) / per_part;  // for_blocks' count: at most `threads`
     std::vector<std::vector<std::uint64_t>> bits(parts);
+    std::vector<std::uint64_t> set(parts, 0);  // bits each part set first: its own count
     std::vector<char> inside(parts, 1);
-    const std::size_t per_part = (n + parts - 1) / parts;
     parallel::for_blocks(pool, n, per_part, [&](std::size_t first, std::size_t last) {
       std::vector<std::uint64_t>& own = bits[first / per_part];
       own.assign((cells + 63) / 64, 0);
+      // Locals, not the captures: kept in registers across the points.
+      const VoxelOf to_voxel = voxel_of;
+      const std::array<std::uint64_t, 3> d = dims;
+      std::uint64_t* const words = own.data();
+      std::uint64_t count = 0;
       for (std::size_t s = first; s < last; ++s) {
-        const auto c = voxel_of(points[s * stride]);
-        if (!in_dense(c, dims, 0)) {
+        const auto c = to_voxel(points[s * stride]);
+        if (!in_dense(c, d, 0)) {
           inside[first / per_part] = 0;
           return;
         }
         const std::uint64_t cell =
-            (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) * dims[2] +
+            (static_cast<std::uint64_t>(c[0]) * d[1] + static_cast<std::uint64_t>(c[1])) * d[2] +
             static_cast<std::uint64_t>(c[2]);
-        own[cell >> 6] |= std::uint64_t{1} << (cell & 63);
+        std::uint64_t& word = words[cell >> 6];
+        const std::uint64_t bit = std::uint64_t{1} << (cell & 63);
+        count += (word & bit) == 0 ? 1 : 0;
+        word |= bit;
       }
+      set[first / per_part] = count;
     });
     if (std::find(inside.begin(), inside.end(), 0) == inside.end()) {
+      if (parts == 1) return set.front();
       for (std::size_t w = 0; w < bits.front().size(); ++w) {
         std::uint64_t word = 0;
         for (const auto& own : bits) word |= own[w];

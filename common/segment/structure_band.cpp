@@ -40,6 +40,17 @@ static_assert(sizeof(Point) == 3 * sizeof(double), "nodes and normals are packed
 constexpr std::size_t kBlock = 256;
 using Block = std::array<std::uint32_t, kBlock>;
 
+#if defined(__SSE2__)
+// Writes nodes n0 and n1 at block[end] and on, moving `end` past those whose bit is set in
+// `lanes` (bit 0: n0, bit 1: n1).
+void keep_two(Block& block, std::size_t& end, std::uint32_t n0, std::uint32_t n1, int lanes) {
+  block[end] = n0;
+  end += static_cast<std::size_t>(lanes & 1);
+  block[end] = n1;
+  end += static_cast<std::size_t>(lanes >> 1);
+}
+#endif
+
 }  // namespace
 
 std::vector<std::uint32_t> band_nodes(const NeighbourGraph& g,
@@ -78,10 +89,7 @@ std::vector<std::uint32_t> band_nodes(const NeighbourGraph& g,
       const int accepted =
           _mm_movemask_pd(_mm_and_pd(_mm_cmple_pd(_mm_and_pd(distance, magnitude), limit),
                                      _mm_cmpge_pd(_mm_and_pd(cosine, magnitude), vmin_cos)));
-      kept[count] = n0;
-      count += static_cast<std::size_t>(accepted & 1);
-      kept[count] = n1;
-      count += static_cast<std::size_t>(accepted >> 1);
+      keep_two(kept, count, n0, n1, accepted);
     }
 #endif
     for (; i < end; ++i) {
@@ -125,14 +133,8 @@ void nodes_above(const NeighbourGraph& g, const std::vector<std::uint32_t>& node
       const int close_bits =
           _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(height, vlow), _mm_cmple_pd(height, vhigh))) &
           up_bits;
-      up[up_end] = n0;
-      up_end += static_cast<std::size_t>(up_bits & 1);
-      up[up_end] = n1;
-      up_end += static_cast<std::size_t>(up_bits >> 1);
-      close[close_end] = n0;
-      close_end += static_cast<std::size_t>(close_bits & 1);
-      close[close_end] = n1;
-      close_end += static_cast<std::size_t>(close_bits >> 1);
+      keep_two(up, up_end, n0, n1, up_bits);
+      keep_two(close, close_end, n0, n1, close_bits);
     }
 #endif
     for (; i < end; ++i) {

@@ -230,14 +230,12 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
     });
     if (std::find(fits.begin(), fits.end(), 0) != fits.end()) packed.clear();
   };
-  const auto bin_in = [&](double v, VoxelNodes& voxels) {
+  // `cell_at(i)`: point i's cell, worked out or unpacked (one loop each, no test per point).
+  const auto bin_cells = [&](const auto& cell_at, VoxelNodes& voxels) {
     keys.clear();
     node.resize(points.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto c = packed.empty() ? cell_of(points[i], v)
-                                    : std::array<std::int64_t, 3>{static_cast<std::int64_t>(packed[i] >> 42),
-                                                                  static_cast<std::int64_t>((packed[i] >> 21) & 0x1FFFFF),
-                                                                  static_cast<std::int64_t>(packed[i] & 0x1FFFFF)};
+      const std::array<std::int64_t, 3> c = cell_at(i);
       bool inserted = false;
       node[i] = voxels.find_or_insert(c, static_cast<std::uint32_t>(keys.size()), inserted);
       if (node[i] == VoxelNodes::kOutside) return false;
@@ -247,6 +245,18 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
       }
     }
     return true;
+  };
+  const auto bin_in = [&](double v, VoxelNodes& voxels) {
+    if (!packed.empty()) {
+      return bin_cells(
+          [&](std::size_t i) {
+            return std::array<std::int64_t, 3>{static_cast<std::int64_t>(packed[i] >> 42),
+                                               static_cast<std::int64_t>((packed[i] >> 21) & 0x1FFFFF),
+                                               static_cast<std::int64_t>(packed[i] & 0x1FFFFF)};
+          },
+          voxels);
+    }
+    return bin_cells([&](std::size_t i) { return cell_of(points[i], v); }, voxels);
   };
   const auto bin = [&](double v) {
     packed.clear();
