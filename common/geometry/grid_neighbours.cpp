@@ -21,6 +21,8 @@ namespace {
 constexpr double kMaxCells = double((1 << 21) - 4);
 // Rounding in a point's position within its cell, in cells: the bounds below give this away.
 constexpr double kSlack = 1e-8;
+// How much wider the cells of the second search for queries the first leaves open are.
+constexpr double kWiderCells = 4.0;
 
 std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
   return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z);
@@ -339,6 +341,26 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
       } else {
         hard.push_back(q);
       }
+    }
+    // A few queries far from every point of their block (a sparse stretch, an outlier) once more
+    // in cells kWiderCells times as wide: one lookup a point for them all, where a scan costs a
+    // distance a point for each (a million points, a handful of such queries: most of the time).
+    if (hard.size() >= 2) {
+      const double wide = cell * kWiderCells;
+      const CellFrame wider{box.min, wide, 1.0 / wide};
+      std::vector<std::uint32_t> at;
+      for (std::size_t q : hard) at.push_back(queries[q]);
+      const std::vector<double> near = nearest_in_blocks(points, at, wider, pool);
+      std::vector<std::size_t> harder;
+      for (std::size_t h = 0; h < hard.size(); ++h) {
+        const double reach = wider.reach(points[at[h]], 1);
+        if (near[h] <= reach * reach) {
+          out[hard[h]] = std::sqrt(near[h]);
+        } else {
+          harder.push_back(hard[h]);
+        }
+      }
+      hard = std::move(harder);
     }
   }
   // Far from everything (an outlier) or a degenerate grid: a scan for a few, else a kd-tree.

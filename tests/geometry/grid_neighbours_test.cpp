@@ -94,6 +94,38 @@ TEST(GridNeighbours, NearestOtherIsExactWhereTheCellsOutnumberThePoints) {
   }
 }
 
+// Points off a surface by two to three of the grid's cells have no neighbour in their own block
+// of cells: a search in wider cells answers them together, the farthest a scan. Every answer as
+// brute force's.
+TEST(GridNeighbours, NearestOtherIsExactForPointsFarFromTheirBlock) {
+  PointList pts = sphere_surface(4000, 11);
+  std::mt19937_64 rng(12);
+  std::normal_distribution<double> g(0.0, 1.0);
+  std::uniform_real_distribution<double> off(3.0, 6.0);
+  std::vector<std::uint32_t> queries;
+  for (int i = 0; i < 12; ++i) {
+    queries.push_back(static_cast<std::uint32_t>(pts.size()));
+    pts.push_back(Point(g(rng), g(rng), g(rng)).normalized() * (5.0 + off(rng)));
+  }
+  for (const double far : {13.0, -14.0}) {
+    queries.push_back(static_cast<std::uint32_t>(pts.size()));
+    pts.emplace_back(far, 0.5 * far, 0.0);
+  }
+  for (std::uint32_t i = 0; i < 4000; i += 97) queries.push_back(i);
+  parallel::ThreadPool two(2);
+  for (parallel::ThreadPool* pool : {static_cast<parallel::ThreadPool*>(nullptr), &two}) {
+    const std::vector<double> got = nearest_other_distances(pts, queries, pool);
+    ASSERT_EQ(got.size(), queries.size());
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t j = 0; j < pts.size(); ++j) {
+        if (j != queries[q]) best = std::min(best, sq(pts[queries[q]], pts[j]));
+      }
+      EXPECT_EQ(got[q], std::sqrt(best)) << "query " << queries[q];
+    }
+  }
+}
+
 TEST(GridNeighbours, DuplicatesAndIdenticalPointsGiveZero) {
   PointList pts = sphere_surface(500, 3);
   pts.push_back(pts[10]);
