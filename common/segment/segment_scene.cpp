@@ -18,6 +18,9 @@
 namespace cloudshape::segment {
 namespace {
 
+// Points a block of the parallel passes over a large cloud's points takes.
+constexpr std::size_t kPointsPerParallelBlock = 65536;
+
 // A flat segment (thinner than its node spacing) within two bands of a structure plane and
 // parallel to it is a piece of it the plane's own band missed (a table's far edge), not an object.
 bool leftover_of_structure(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
@@ -187,13 +190,33 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
     if (leftover_of_structure(g, members[s], out.structure, cfg)) continue;
     object_of_segment[s] = objects++;
   }
-  out.objects.resize(static_cast<std::size_t>(objects));
-  for (std::uint32_t i = 0; i < g.node_of_point.size(); ++i) {
-    const std::uint32_t n = g.node_of_point[i];
-    if (n == kNoNode || label[n] < 0) continue;
-    const std::int32_t o = object_of_segment[label[n]];
-    const std::uint32_t p = kept.empty() ? i : kept[i];
-    if (o >= 0 && !on_structure(footprints, points[p])) out.objects[o].push_back(p);
+  // A large cloud's points in blocks on the pool, each block with its own lists, joined in block
+  // order: the lists one pass in point order makes.
+  const std::size_t count = g.node_of_point.size();
+  const std::size_t per_block =
+      pool != nullptr && pool->size() > 1 && count >= kPointsPerParallelBlock ? kPointsPerParallelBlock : std::max<std::size_t>(1, count);
+  std::vector<std::vector<std::vector<std::uint32_t>>> of_block((count + per_block - 1) / per_block);
+  parallel::for_blocks(pool, count, per_block, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::vector<std::uint32_t>>& lists = of_block[begin / per_block];
+    lists.resize(static_cast<std::size_t>(objects));
+    for (std::size_t i = begin; i < end; ++i) {
+      const std::uint32_t n = g.node_of_point[i];
+      if (n == kNoNode || label[n] < 0) continue;
+      const std::int32_t o = object_of_segment[label[n]];
+      const std::uint32_t p = kept.empty() ? static_cast<std::uint32_t>(i) : kept[i];
+      if (o >= 0 && (footprints.empty() || !on_structure(footprints, points[p]))) lists[o].push_back(p);
+    }
+  });
+  if (of_block.size() == 1) {
+    out.objects = std::move(of_block.front());
+  } else {
+    out.objects.resize(static_cast<std::size_t>(objects));
+    for (std::size_t o = 0; o < out.objects.size(); ++o) {
+      std::size_t total = 0;
+      for (const auto& lists : of_block) total += lists[o].size();
+      out.objects[o].reserve(total);
+      for (const auto& lists : of_block) out.objects[o].insert(out.objects[o].end(), lists[o].begin(), lists[o].end());
+    }
   }
   for (auto& part : refined) out.objects.push_back(std::move(part));
   out.objects.erase(std::remove_if(out.objects.begin(), out.objects.end(), [](const auto& o) { return o.empty(); }),

@@ -195,5 +195,24 @@ TEST(SegmentSyntheticScenes, TheTableBeyondTheObjectsShadowsIsTableToo) {
 }
 TEST(SegmentSyntheticScenes, ObjectsAgainstAWall) { expect_every_object(synth::SceneLayout::wall, 2); }
 
+// An organized frame of more points than one block of the parallel passes (the objects' points,
+// the table's footprint left out of them) on two threads: the same objects, point for point.
+TEST(SegmentSyntheticScenes, TwoThreadsGiveTheSameObjects) {
+  synth::SceneRecipe recipe;
+  recipe.layout = synth::SceneLayout::touching;
+  recipe.count = 3;
+  recipe.seed = 1;
+  synth::CaptureOptions options;
+  options.width = 640;
+  options.height = 480;
+  const CapturedScene scene = capture_points(recipe, options);
+  ASSERT_GT(scene.points.size(), 65536u);
+  const config::SegmentConfig cfg = config::PipelineConfig{}.segment;
+  parallel::ThreadPool pool(2);
+  const SceneSegmentation one = segment_scene(scene.points, scene.grid, cfg);
+  ASSERT_GE(one.objects.size(), 3u);
+  EXPECT_EQ(one.objects, segment_scene(scene.points, scene.grid, cfg, &pool).objects);
+}
+
 }  // namespace
 }  // namespace cloudshape::segment
