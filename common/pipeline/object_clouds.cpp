@@ -22,9 +22,17 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
   // Each object preprocessed in its own slot; the slots joined in object order.
   std::vector<PreprocessedCloud> done(scene.objects.size());
   parallel::for_blocks(pool, scene.objects.size(), 1, [&](std::size_t begin, std::size_t) {
+    const std::vector<std::uint32_t>& members = scene.objects[begin];
+    // An object of every point in input order (a lone solid) is the cloud itself: not copied.
+    bool whole = members.size() == raw.size();
+    for (std::size_t j = 0; whole && j < members.size(); ++j) whole = members[j] == j;
+    if (whole) {
+      done[begin] = preprocess_cloud(raw, pre, pool);
+      return;
+    }
     PointList points;
-    points.reserve(scene.objects[begin].size());
-    for (std::uint32_t i : scene.objects[begin]) points.push_back(raw[i]);
+    points.reserve(members.size());
+    for (std::uint32_t i : members) points.push_back(raw[i]);
     done[begin] = preprocess_cloud(points, pre, pool);
   });
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
