@@ -181,20 +181,46 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 // none): the cells of the queries' blocks in a map, each with the queries it serves, then one pass
 // over the points, a lookup each, instead of binning them all.
 std::vector<double> nearest_in_blocks(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                      const CellFrame& frame, parallel::ThreadPool* pool) {
+                                      const CellFrame& frame, const Eigen::Vector3d& extent, parallel::ThreadPool* pool) {
   detail::CellMap blocks(queries.size() * 27);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
   pairs.reserve(queries.size() * 27);
   std::uint32_t block_cells = 0;
+  // A bit per cell of the points' box (with the coordinates' margin), set where a block lies: most
+  // points lie in no block, and a bit in a small array tells so sooner than the map. None where
+  // the array would take more than a byte a point, or a block reaches beyond it.
+  std::array<std::uint64_t, 3> dims{};
+  double bits = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    dims[a] = static_cast<std::uint64_t>(extent[a]) + 3;
+    bits *= static_cast<double>(dims[a]);
+  }
+  std::vector<std::uint64_t> in_block;
+  if (bits <= 8.0 * static_cast<double>(points.size())) in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
+  const auto bit_of = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return (static_cast<std::uint64_t>(x) * dims[1] + static_cast<std::uint64_t>(y)) * dims[2] + static_cast<std::uint64_t>(z);
+  };
+  const auto in_bits = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
+    return static_cast<std::uint64_t>(x) < dims[0] && static_cast<std::uint64_t>(y) < dims[1] &&
+           static_cast<std::uint64_t>(z) < dims[2];
+  };
   for (std::size_t q = 0; q < queries.size(); ++q) {
     const auto c = frame.coords(points[queries[q]]);
     for (std::int64_t dx = -1; dx <= 1; ++dx) {
       for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
           bool inserted = false;
-          const std::uint32_t b = blocks.find_or_insert(key_of(c[0] + dx, c[1] + dy, c[2] + dz), block_cells, inserted);
+          const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
+          const std::uint32_t b = blocks.find_or_insert(key_of(x, y, z), block_cells, inserted);
           block_cells += inserted ? 1 : 0;
           pairs.emplace_back(b, static_cast<std::uint32_t>(q));
+          if (in_block.empty()) continue;
+          if (!in_bits(x, y, z)) {
+            in_block.clear();
+            continue;
+          }
+          const std::uint64_t bit = bit_of(x, y, z);
+          in_block[bit >> 6] |= std::uint64_t{1} << (bit & 63);
         }
       }
     }
@@ -212,6 +238,10 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
     best.assign(queries.size(), std::numeric_limits<double>::infinity());
     for (std::size_t i = begin; i < end; ++i) {
       const auto c = frame.coords(points[i]);
+      if (!in_block.empty() && in_bits(c[0], c[1], c[2])) {
+        const std::uint64_t bit = bit_of(c[0], c[1], c[2]);
+        if (!((in_block[bit >> 6] >> (bit & 63)) & 1)) continue;
+      }
       const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
       if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
@@ -333,7 +363,8 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
   } else {
     const CellFrame frame{box.min, cell, inv};
     std::optional<std::vector<double>> in_array = nearest_in_cell_array(points, queries, frame, extent, pool);
-    const std::vector<double> best = in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, frame, pool);
+    const std::vector<double> best =
+        in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, frame, extent, pool);
     for (std::size_t q = 0; q < queries.size(); ++q) {
       const double reach = frame.reach(points[queries[q]], 1);
       if (best[q] <= reach * reach) {
@@ -350,7 +381,7 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
       const CellFrame wider{box.min, wide, 1.0 / wide};
       std::vector<std::uint32_t> at;
       for (std::size_t q : hard) at.push_back(queries[q]);
-      const std::vector<double> near = nearest_in_blocks(points, at, wider, pool);
+      const std::vector<double> near = nearest_in_blocks(points, at, wider, extent / kWiderCells, pool);
       std::vector<std::size_t> harder;
       for (std::size_t h = 0; h < hard.size(); ++h) {
         const double reach = wider.reach(points[at[h]], 1);
