@@ -235,9 +235,11 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
     return segment_graph(build_organized_graph(points, grid, cfg, pool), false, points, grid, cfg, pool, view);
   }
   may_be_isolated = may_be_isolated && !grid.organized() && !view && cfg.isolated_target_nodes > 0;
-  const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool);
+  // One bounding box for the budgets and either graph.
+  const geometry::Bounds box = geometry::bounding_box(points, 1, pool);
+  const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool, &box);
   if (may_be_isolated && coarse > scene) {
-    NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool);
+    NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool, &box);
     std::vector<char> none(trial.size(), 0);
     bool reaches = false;
     remove_structure(trial, cfg, none, pool, false, &reaches);
@@ -246,8 +248,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       if (isolated_whole(out, points.size(), cfg)) return out;
     }
   }
-  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool), false, points, grid, cfg, pool,
-                       view);
+  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box), false, points, grid, cfg,
+                       pool, view);
 }
 
 }  // namespace

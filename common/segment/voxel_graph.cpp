@@ -96,9 +96,9 @@ double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, p
 }
 
 std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
-                                        parallel::ThreadPool* pool) {
-  return points.empty() ? std::pair<double, double>{0.0, 0.0}
-                        : budgets_in(points, geometry::bounding_box(points, 1, pool), cfg, fewer, pool);
+                                        parallel::ThreadPool* pool, const geometry::Bounds* bounds) {
+  if (points.empty()) return {0.0, 0.0};
+  return budgets_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), cfg, fewer, pool);
 }
 
 // One bounding box for the budget, its resolution bound and the binning; target_nodes stays the
@@ -111,13 +111,14 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
 }
 
 NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
-                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool) {
+                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
+                                 const geometry::Bounds* bounds) {
   if (points.empty()) {
     NeighbourGraph g;
     g.adjacency_begin.assign(1, 0);
     return g;
   }
-  return build_in(points, geometry::bounding_box(points, 1, pool), voxel, max_nodes, cfg, pool);
+  return build_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), voxel, max_nodes, cfg, pool);
 }
 
 namespace {
