@@ -188,7 +188,7 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
   std::uint32_t block_cells = 0;
   // A bit per cell of the points' box (with the coordinates' margin), set where a block lies: most
   // points lie in no block, and a bit in a small array tells so sooner than the map. None where
-  // the array would take more than a byte a point, or a block reaches beyond it.
+  // the array would take more than two bytes a point, or a block reaches beyond it.
   std::array<std::uint64_t, 3> dims{};
   double bits = 1.0;
   for (int a = 0; a < 3; ++a) {
@@ -196,7 +196,7 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
     bits *= static_cast<double>(dims[a]);
   }
   std::vector<std::uint64_t> in_block;
-  if (bits <= 8.0 * static_cast<double>(points.size())) in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
+  if (bits <= 16.0 * static_cast<double>(points.size())) in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
   const auto bit_of = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
     return (static_cast<std::uint64_t>(x) * dims[1] + static_cast<std::uint64_t>(y)) * dims[2] + static_cast<std::uint64_t>(z);
   };
@@ -225,6 +225,10 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
       }
     }
   }
+  // The queries' points side by side: a hit reads them there, not across the whole cloud.
+  std::vector<Point> query_point;
+  query_point.reserve(queries.size());
+  for (std::uint32_t q : queries) query_point.push_back(points[q]);
   std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
   for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
   for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
@@ -246,7 +250,7 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
       if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
         const std::uint32_t q = cell_queries[e];
-        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(points[queries[q]], points[i]));
+        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(query_point[q], points[i]));
       }
     }
   });
