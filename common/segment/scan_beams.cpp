@@ -26,9 +26,11 @@ ElevationBins::ElevationBins(double bin_degrees) : bin_degrees_(bin_degrees) {
     const double edge = std::sin(degrees * kRadians);
     edges_.push_back(edges_.empty() ? edge : std::max(edge, edges_.back()));
   }
-  // Two cells an edge: a point's search starts at most a few edges from its own, except near the
-  // poles, where the edges crowd in sine.
-  first_edge_.resize(2 * edges_.size());
+  // Eight cells an edge (115 kB for 0.05-degree bins): most cells hold no edge, so a point's
+  // search mostly starts at its own edge, and its loops take no step a branch predictor could
+  // miss (two cells an edge left a random step or two per point: a 1M-point cylinder's lidar
+  // test 18 -> 9 ms); near the poles, where the edges crowd in sine, a few steps remain.
+  first_edge_.resize(8 * edges_.size());
   cells_per_unit_ = static_cast<double>(first_edge_.size()) / 2.0;
   max_cell_ = static_cast<double>(first_edge_.size() - 1);
   // The first edge above each cell's start (std::upper_bound's), swept: the starts rise with c.
