@@ -123,7 +123,7 @@ double volume(const OrientedBox& b) { return b.size.prod() + 1e-9 * std::pow(b.s
 }  // namespace
 
 OrientedBox oriented_bounding_box(const PointList& points, const std::vector<Eigen::Matrix3d>& hints,
-                                  std::size_t hull_samples) {
+                                  std::size_t hull_samples, parallel::ThreadPool* pool) {
   if (points.empty()) return {};
   // The frame is chosen on a sample; the bounds then take every point.
   const std::size_t step = std::max<std::size_t>(1, points.size() / std::max<std::size_t>(1, hull_samples));
@@ -132,13 +132,14 @@ OrientedBox oriented_bounding_box(const PointList& points, const std::vector<Eig
   std::vector<Eigen::Matrix3d> starts{orthonormal_rows(compute_pca(points).eigenvectors.transpose())};
   for (const Eigen::Matrix3d& h : hints)
     if (h.allFinite()) starts.push_back(orthonormal_rows(h));
-  Eigen::Matrix3d best_frame = starts.front();
-  double best_volume = std::numeric_limits<double>::infinity();
   // Principal axes are arbitrary on a cube-like set: from every start, each round turns the
   // frame about each of its axes to its tightest rectangle and keeps the best, until a round
-  // gains nothing (a face of the tightest box then lies across one of the frame's axes).
-  for (const Eigen::Matrix3d& start : starts) {
-    Eigen::Matrix3d current = start;
+  // gains nothing (a face of the tightest box then lies across one of the frame's axes). The
+  // starts side by side on the pool; the first of the least volume wins, as in start order.
+  std::vector<Eigen::Matrix3d> frame_of(starts.size());
+  std::vector<double> volume_of(starts.size());
+  parallel::for_blocks(pool, starts.size(), 1, [&](std::size_t s, std::size_t) {
+    Eigen::Matrix3d current = starts[s];
     double current_volume = volume(box_in_frame(sample, current));
     for (int round = 0; round < 6; ++round) {
       Eigen::Matrix3d next = current;
@@ -151,7 +152,13 @@ OrientedBox oriented_bounding_box(const PointList& points, const std::vector<Eig
       if (!(next_volume < current_volume * (1.0 - 1e-9))) break;
       current = next, current_volume = next_volume;
     }
-    if (current_volume < best_volume) best_volume = current_volume, best_frame = current;
+    frame_of[s] = current;
+    volume_of[s] = current_volume;
+  });
+  Eigen::Matrix3d best_frame = starts.front();
+  double best_volume = std::numeric_limits<double>::infinity();
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    if (volume_of[s] < best_volume) best_volume = volume_of[s], best_frame = frame_of[s];
   }
   return sorted(box_in_frame(points, best_frame));
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "geometry/point_cloud.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 
@@ -19,10 +20,11 @@ struct OrientedBox {
 // axes); from each, rounds turn the frame about each of its axes to the minimum-area rectangle
 // of the points projected across it (rotating calipers on a convex hull) while the volume
 // falls. The frame is chosen on at most `hull_samples` points; the bounds take every point,
-// so every point lies inside. An empty set gives a zero box at the origin.
+// so every point lies inside. An empty set gives a zero box at the origin. A `pool` works from
+// the starts side by side: the same box.
 OrientedBox oriented_bounding_box(const PointList& points,
                                   const std::vector<Eigen::Matrix3d>& hints = {},
-                                  std::size_t hull_samples = 2000);
+                                  std::size_t hull_samples = 2000, parallel::ThreadPool* pool = nullptr);
 
 namespace detail {
 // The unit direction of the first side of the minimum-area rectangle round `hull` (a convex

@@ -161,9 +161,9 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
 }
 
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
-                 const config::SolveConfig& cfg) {
+                 const config::SolveConfig& cfg, parallel::ThreadPool* pool) {
   const geometry::OrientedBox box = geometry::oriented_bounding_box(
-      cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)));
+      cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)), pool);
   return {box.center, box.axes, box.size};
 }
 
@@ -199,7 +199,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
   if (classification.candidates.empty()) {
     out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
-    out.extent = extent_of(cloud, {}, cfg);
+    out.extent = extent_of(cloud, {}, cfg, pool);
     return out;
   }
   // On two scan lines only a sphere is determined; one line (segment.scan_object_min_beams
@@ -215,7 +215,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   if (candidates.empty()) {
     out.reason = scan_lines == 1 ? lines() + ": no solid is determined"
                                  : lines() + ": only a sphere is determined, and the points were not classed as one";
-    out.extent = extent_of(cloud, {}, cfg);
+    out.extent = extent_of(cloud, {}, cfg, pool);
     return out;
   }
   SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
@@ -318,7 +318,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     if (sphere_only) {
       out.reason = lines() + ": a hollow side, and no container is determined";
-      out.extent = extent_of(cloud, {}, cfg);
+      out.extent = extent_of(cloud, {}, cfg, pool);
       return out;
     }
     auto container = container_of_hollow(cloud, chosen->first, cfg);
@@ -336,7 +336,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     else
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
     out.reason = sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf);
-    out.extent = extent_of(cloud, {}, cfg);
+    out.extent = extent_of(cloud, {}, cfg, pool);
     return out;
   }
   const FittedSolid& s = chosen->first;
@@ -348,7 +348,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.regular = s.regular;
   out.polygon = s.polygon;
   // The solid's own frame is usually the tightest one for its points.
-  out.extent = extent_of(cloud, {s.axes}, cfg);
+  out.extent = extent_of(cloud, {s.axes}, cfg, pool);
   // A single view cannot confirm the hidden side: the dimensions describe what was seen,
   // and the confidence drops with the share of the solid that was not seen.
   const double coverage =

@@ -74,6 +74,28 @@ TEST(OrientedBox, FlatRectangleGivesItsRectangle) {
   EXPECT_LT(b.size[2], 1e-9);
 }
 
+// The starts worked from side by side on a pool: the box of the serial search, to the bit, with
+// and without hints (a cylinder-like set, whose starts end in different frames).
+TEST(OrientedBox, APoolGivesTheSameBox) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  PointList pts;
+  for (int i = 0; i < 6000; ++i) {
+    const double a = angle(rng);
+    pts.push_back(r * Eigen::Vector3d(2.0 * std::cos(a), 2.0 * std::sin(a), 3.0 * u(rng)));
+  }
+  const Eigen::Matrix3d hint = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  parallel::ThreadPool pool(2);
+  for (const std::vector<Eigen::Matrix3d>& hints : {std::vector<Eigen::Matrix3d>{}, std::vector<Eigen::Matrix3d>{hint, r}}) {
+    const OrientedBox serial = oriented_bounding_box(pts, hints);
+    const OrientedBox split = oriented_bounding_box(pts, hints, 2000, &pool);
+    EXPECT_EQ(split.center, serial.center) << hints.size();
+    EXPECT_EQ(split.axes, serial.axes) << hints.size();
+    EXPECT_EQ(split.size, serial.size) << hints.size();
+  }
+}
+
 TEST(OrientedBox, EmptyAndSinglePoint) {
   EXPECT_EQ(oriented_bounding_box({}).size, Eigen::Vector3d::Zero());
   const OrientedBox one = oriented_bounding_box({Point(1, 2, 3)});
