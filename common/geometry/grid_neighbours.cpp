@@ -21,7 +21,9 @@ namespace {
 constexpr double kMaxCells = double((1 << 21) - 4);
 // Rounding in a point's position within its cell, in cells: the bounds below give this away.
 constexpr double kSlack = 1e-8;
-// How much wider the cells of the second search for queries the first leaves open are.
+// How much wider the cells of the second search for queries the first leaves open are: their
+// nearest lies beyond one cell, mostly within two, and four keeps that search's blocks (and the
+// points it must look at) few.
 constexpr double kWiderCells = 4.0;
 
 std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
@@ -179,26 +181,32 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 
 // The least squared distance from each query to another point of its 27-cell block (infinity if
 // none): the cells of the queries' blocks in a map, each with the queries it serves, then one pass
-// over the points, a lookup each, instead of binning them all.
-std::vector<double> nearest_in_blocks(const PointList& points, const std::vector<std::uint32_t>& queries,
-                                      const CellFrame& frame, const Eigen::Vector3d& extent, parallel::ThreadPool* pool) {
+// over the points, each tested against the blocks, instead of binning them all. `extent`: the
+// box of `frame`'s cells the points lie in (the bounds the caller passed), in cells.
+std::vector<double> nearest_in_blocks(const PointList& points,
+                                      const std::vector<std::uint32_t>& queries,
+                                      const CellFrame& frame, const Eigen::Vector3d& extent,
+                                      parallel::ThreadPool* pool) {
   detail::CellMap blocks(queries.size() * 27);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
   pairs.reserve(queries.size() * 27);
   std::uint32_t block_cells = 0;
-  // A bit per cell of the points' box (with the coordinates' margin), set where a block lies: most
-  // points lie in no block, and a bit in a small array tells so sooner than the map. None where
-  // the array would take more than two bytes a point, or a block reaches beyond it.
+  // A bit per cell of that box (with the coordinates' margin), set where a block lies: most points
+  // lie in no block, and a bit in a small array tells so sooner than the map, whose lookups miss
+  // the cache. None where the array would take more than two bytes a point, or a block reaches
+  // beyond it (bounds that are not the points' own).
   std::array<std::uint64_t, 3> dims{};
   double bits = 1.0;
   for (int a = 0; a < 3; ++a) {
-    dims[a] = static_cast<std::uint64_t>(extent[a]) + 3;
+    dims[a] = static_cast<std::uint64_t>(std::max(0.0, extent[a])) + 3;
     bits *= static_cast<double>(dims[a]);
   }
   std::vector<std::uint64_t> in_block;
-  if (bits <= 16.0 * static_cast<double>(points.size())) in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
+  if (bits <= 16.0 * static_cast<double>(points.size()))
+    in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
   const auto bit_of = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x) * dims[1] + static_cast<std::uint64_t>(y)) * dims[2] + static_cast<std::uint64_t>(z);
+    return (static_cast<std::uint64_t>(x) * dims[1] + static_cast<std::uint64_t>(y)) * dims[2] +
+           static_cast<std::uint64_t>(z);
   };
   const auto in_bits = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
     return static_cast<std::uint64_t>(x) < dims[0] && static_cast<std::uint64_t>(y) < dims[1] &&
@@ -250,7 +258,8 @@ std::vector<double> nearest_in_blocks(const PointList& points, const std::vector
       if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
         const std::uint32_t q = cell_queries[e];
-        if (queries[q] != i) best[q] = std::min(best[q], squared_distance(query_point[q], points[i]));
+        if (queries[q] != i)
+          best[q] = std::min(best[q], squared_distance(query_point[q], points[i]));
       }
     }
   });
@@ -377,15 +386,17 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
         hard.push_back(q);
       }
     }
-    // A few queries far from every point of their block (a sparse stretch, an outlier) once more
-    // in cells kWiderCells times as wide: one lookup a point for them all, where a scan costs a
-    // distance a point for each (a million points, a handful of such queries: most of the time).
+    // Queries far from every point of their block (a sparse stretch, an outlier) once more in
+    // cells kWiderCells times as wide: one pass testing each point against their blocks, where a
+    // scan costs a distance a point for each of them; from two on the pass is the cheaper (on a
+    // million points five such scans took most of the search's time).
     if (hard.size() >= 2) {
       const double wide = cell * kWiderCells;
       const CellFrame wider{box.min, wide, 1.0 / wide};
       std::vector<std::uint32_t> at;
       for (std::size_t q : hard) at.push_back(queries[q]);
-      const std::vector<double> near = nearest_in_blocks(points, at, wider, extent / kWiderCells, pool);
+      const std::vector<double> near =
+          nearest_in_blocks(points, at, wider, extent / kWiderCells, pool);
       std::vector<std::size_t> harder;
       for (std::size_t h = 0; h < hard.size(); ++h) {
         const double reach = wider.reach(points[at[h]], 1);

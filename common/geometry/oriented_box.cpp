@@ -7,6 +7,7 @@
 
 #include "geometry/convex_hull.hpp"
 #include "geometry/pca.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 namespace {
@@ -122,7 +123,8 @@ double volume(const OrientedBox& b) { return b.size.prod() + 1e-9 * std::pow(b.s
 
 }  // namespace
 
-OrientedBox oriented_bounding_box(const PointList& points, const std::vector<Eigen::Matrix3d>& hints,
+OrientedBox oriented_bounding_box(const PointList& points,
+                                  const std::vector<Eigen::Matrix3d>& hints,
                                   std::size_t hull_samples, parallel::ThreadPool* pool) {
   if (points.empty()) return {};
   // The frame is chosen on a sample; the bounds then take every point.

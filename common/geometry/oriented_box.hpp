@@ -5,7 +5,10 @@
 #include <vector>
 
 #include "geometry/point_cloud.hpp"
-#include "parallel/thread_pool.hpp"
+
+namespace cloudshape::parallel {
+class ThreadPool;
+}  // namespace cloudshape::parallel
 
 namespace cloudshape::geometry {
 
@@ -24,7 +27,8 @@ struct OrientedBox {
 // the starts side by side: the same box.
 OrientedBox oriented_bounding_box(const PointList& points,
                                   const std::vector<Eigen::Matrix3d>& hints = {},
-                                  std::size_t hull_samples = 2000, parallel::ThreadPool* pool = nullptr);
+                                  std::size_t hull_samples = 2000,
+                                  parallel::ThreadPool* pool = nullptr);
 
 namespace detail {
 // The unit direction of the first side of the minimum-area rectangle round `hull` (a convex

@@ -163,7 +163,8 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
                  const config::SolveConfig& cfg, parallel::ThreadPool* pool) {
   const geometry::OrientedBox box = geometry::oriented_bounding_box(
-      cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)), pool);
+      cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)),
+      pool);
   return {box.center, box.axes, box.size};
 }
 

@@ -12,8 +12,11 @@
 
 #include "config/stage_configs.hpp"
 #include "geometry/point_cloud.hpp"
-#include "geometry/voxel_grid.hpp"
 #include "parallel/thread_pool.hpp"
+
+namespace cloudshape::geometry {
+struct Bounds;
+}  // namespace cloudshape::geometry
 
 namespace cloudshape::segment {
 
@@ -64,8 +67,9 @@ double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, p
 // budget_voxel, and the same for `fewer` voxel target nodes instead of cfg.voxel_target_nodes
 // (never finer), from one pass over the points: {budget_voxel, coarser}. `bounds`, if given, must
 // be bounding_box(points) (a caller that has it saves the pass).
-std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
-                                        parallel::ThreadPool* pool = nullptr, const geometry::Bounds* bounds = nullptr);
+std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg,
+                                        std::int64_t fewer, parallel::ThreadPool* pool = nullptr,
+                                        const geometry::Bounds* bounds = nullptr);
 
 // Any cloud: voxels of budget_voxel's edge, grown by a quarter at a time while more than 1.3
 // cfg.target_nodes are occupied; a voxel's node is its centroid, 26-neighbour voxels are
@@ -76,8 +80,10 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
 
 // The same with the voxel edge given (never below 1e-300), grown only while more than 1.3
 // `max_nodes` are occupied (none: not grown). `bounds` as for budget_voxels.
-NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
-                                 const config::SegmentConfig& cfg, parallel::ThreadPool* pool = nullptr,
+NeighbourGraph build_voxel_graph(const PointList& points, double voxel,
+                                 std::optional<std::int64_t> max_nodes,
+                                 const config::SegmentConfig& cfg,
+                                 parallel::ThreadPool* pool = nullptr,
                                  const geometry::Bounds* bounds = nullptr);
 
 // Sets the graph's viewpoint and, when there is one, turns every normal towards it (a lidar

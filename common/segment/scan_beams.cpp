@@ -26,10 +26,8 @@ ElevationBins::ElevationBins(double bin_degrees) : bin_degrees_(bin_degrees) {
     const double edge = std::sin(degrees * kRadians);
     edges_.push_back(edges_.empty() ? edge : std::max(edge, edges_.back()));
   }
-  // Eight cells an edge (115 kB for 0.05-degree bins): most cells hold no edge, so a point's
-  // search mostly starts at its own edge, and its loops take no step a branch predictor could
-  // miss (two cells an edge left a random step or two per point: a 1M-point cylinder's lidar
-  // test 18 -> 9 ms); near the poles, where the edges crowd in sine, a few steps remain.
+  // Eight cells an edge: a point's cell seldom holds an edge below it, so its search seldom steps,
+  // and each step is a branch mispredicted (near the poles the edges crowd in sine: a few steps).
   first_edge_.resize(8 * edges_.size());
   cells_per_unit_ = static_cast<double>(first_edge_.size()) / 2.0;
   max_cell_ = static_cast<double>(first_edge_.size() - 1);

@@ -18,7 +18,8 @@
 namespace cloudshape::segment {
 namespace {
 
-// Points a block of the parallel passes over a large cloud's points takes.
+// Points a block of the objects' assignment takes on the pool: each block keeps a list per
+// object, joined after, which only pays for itself over many points.
 constexpr std::size_t kPointsPerParallelBlock = 65536;
 
 // A flat segment (thinner than its node spacing) within two bands of a structure plane and
@@ -194,8 +195,11 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
   // order: the lists one pass in point order makes.
   const std::size_t count = g.node_of_point.size();
   const std::size_t per_block =
-      pool != nullptr && pool->size() > 1 && count >= kPointsPerParallelBlock ? kPointsPerParallelBlock : std::max<std::size_t>(1, count);
-  std::vector<std::vector<std::vector<std::uint32_t>>> of_block((count + per_block - 1) / per_block);
+      pool != nullptr && pool->size() > 1 && count >= kPointsPerParallelBlock
+          ? kPointsPerParallelBlock
+          : std::max<std::size_t>(1, count);
+  const std::size_t blocks = (count + per_block - 1) / per_block;
+  std::vector<std::vector<std::vector<std::uint32_t>>> of_block(blocks);
   parallel::for_blocks(pool, count, per_block, [&](std::size_t begin, std::size_t end) {
     std::vector<std::vector<std::uint32_t>>& lists = of_block[begin / per_block];
     lists.resize(static_cast<std::size_t>(objects));
@@ -204,7 +208,8 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
       if (n == kNoNode || label[n] < 0) continue;
       const std::int32_t o = object_of_segment[label[n]];
       const std::uint32_t p = kept.empty() ? static_cast<std::uint32_t>(i) : kept[i];
-      if (o >= 0 && (footprints.empty() || !on_structure(footprints, points[p]))) lists[o].push_back(p);
+      if (o >= 0 && (footprints.empty() || !on_structure(footprints, points[p])))
+        lists[o].push_back(p);
     }
   });
   if (of_block.size() == 1) {
@@ -215,7 +220,8 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
       std::size_t total = 0;
       for (const auto& lists : of_block) total += lists[o].size();
       out.objects[o].reserve(total);
-      for (const auto& lists : of_block) out.objects[o].insert(out.objects[o].end(), lists[o].begin(), lists[o].end());
+      for (const auto& lists : of_block)
+        out.objects[o].insert(out.objects[o].end(), lists[o].begin(), lists[o].end());
     }
   }
   for (auto& part : refined) out.objects.push_back(std::move(part));
@@ -235,9 +241,10 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
     return segment_graph(build_organized_graph(points, grid, cfg, pool), false, points, grid, cfg, pool, view);
   }
   may_be_isolated = may_be_isolated && !grid.organized() && !view && cfg.isolated_target_nodes > 0;
-  // One bounding box for the budgets and either graph.
+  // One bounding box for the budgets and either graph: one pass over the points, not three.
   const geometry::Bounds box = geometry::bounding_box(points, 1, pool);
-  const auto [scene, coarse] = budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool, &box);
+  const auto [scene, coarse] =
+      budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool, &box);
   if (may_be_isolated && coarse > scene) {
     NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool, &box);
     std::vector<char> none(trial.size(), 0);
@@ -248,8 +255,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
       if (isolated_whole(out, points.size(), cfg)) return out;
     }
   }
-  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box), false, points, grid, cfg,
-                       pool, view);
+  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box), false,
+                       points, grid, cfg, pool, view);
 }
 
 }  // namespace

@@ -95,10 +95,12 @@ double budget_voxel(const PointList& points, const config::SegmentConfig& cfg, p
   return points.empty() ? 0.0 : budget_in(points, geometry::bounding_box(points, 1, pool), cfg, pool);
 }
 
-std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg, std::int64_t fewer,
-                                        parallel::ThreadPool* pool, const geometry::Bounds* bounds) {
+std::pair<double, double> budget_voxels(const PointList& points, const config::SegmentConfig& cfg,
+                                        std::int64_t fewer, parallel::ThreadPool* pool,
+                                        const geometry::Bounds* bounds) {
   if (points.empty()) return {0.0, 0.0};
-  return budgets_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), cfg, fewer, pool);
+  return budgets_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), cfg, fewer,
+                    pool);
 }
 
 // One bounding box for the budget, its resolution bound and the binning; target_nodes stays the
@@ -110,7 +112,8 @@ NeighbourGraph build_voxel_graph(const PointList& points, const config::SegmentC
   return build_in(points, box, budget_in(points, box, cfg, pool), cfg.target_nodes, cfg, pool);
 }
 
-NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::optional<std::int64_t> max_nodes,
+NeighbourGraph build_voxel_graph(const PointList& points, double voxel,
+                                 std::optional<std::int64_t> max_nodes,
                                  const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
                                  const geometry::Bounds* bounds) {
   if (points.empty()) {
@@ -118,7 +121,8 @@ NeighbourGraph build_voxel_graph(const PointList& points, double voxel, std::opt
     g.adjacency_begin.assign(1, 0);
     return g;
   }
-  return build_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), voxel, max_nodes, cfg, pool);
+  return build_in(points, bounds ? *bounds : geometry::bounding_box(points, 1, pool), voxel,
+                  max_nodes, cfg, pool);
 }
 
 namespace {

@@ -97,11 +97,13 @@ TEST(GridNeighbours, NearestOtherIsExactWhereTheCellsOutnumberThePoints) {
 // Points off a surface by two to three of the grid's cells have no neighbour in their own block
 // of cells: a search in wider cells answers them together, the farthest a scan. Every answer as
 // brute force's.
-TEST(GridNeighbours, NearestOtherIsExactForPointsFarFromTheirBlock) {
-  PointList pts = sphere_surface(4000, 11);
+void expect_far_points_exact(std::size_t surface_points) {
+  PointList pts = sphere_surface(surface_points, 11);
   std::mt19937_64 rng(12);
   std::normal_distribution<double> g(0.0, 1.0);
-  std::uniform_real_distribution<double> off(3.0, 6.0);
+  // Two to three of the grid's cells off the surface, whatever its density.
+  const double cells = std::sqrt(4000.0 / static_cast<double>(surface_points));
+  std::uniform_real_distribution<double> off(3.0 * cells, 6.0 * cells);
   std::vector<std::uint32_t> queries;
   for (int i = 0; i < 12; ++i) {
     queries.push_back(static_cast<std::uint32_t>(pts.size()));
@@ -111,7 +113,7 @@ TEST(GridNeighbours, NearestOtherIsExactForPointsFarFromTheirBlock) {
     queries.push_back(static_cast<std::uint32_t>(pts.size()));
     pts.emplace_back(far, 0.5 * far, 0.0);
   }
-  for (std::uint32_t i = 0; i < 4000; i += 97) queries.push_back(i);
+  for (std::uint32_t i = 0; i < surface_points; i += 97) queries.push_back(i);
   parallel::ThreadPool two(2);
   for (parallel::ThreadPool* pool : {static_cast<parallel::ThreadPool*>(nullptr), &two}) {
     const std::vector<double> got = nearest_other_distances(pts, queries, pool);
@@ -121,9 +123,14 @@ TEST(GridNeighbours, NearestOtherIsExactForPointsFarFromTheirBlock) {
       for (std::size_t j = 0; j < pts.size(); ++j) {
         if (j != queries[q]) best = std::min(best, sq(pts[queries[q]], pts[j]));
       }
-      EXPECT_EQ(got[q], std::sqrt(best)) << "query " << queries[q];
+      EXPECT_EQ(got[q], std::sqrt(best)) << surface_points << " points, query " << queries[q];
     }
   }
+}
+
+TEST(GridNeighbours, NearestOtherIsExactForPointsFarFromTheirBlock) {
+  expect_far_points_exact(4000);
+  expect_far_points_exact(40000);  // several blocks of points on the pool, their minima joined
 }
 
 TEST(GridNeighbours, DuplicatesAndIdenticalPointsGiveZero) {

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "geometry/convex_hull.hpp"
+#include "parallel/thread_pool.hpp"
 
 namespace cloudshape::geometry {
 namespace {
@@ -74,12 +75,13 @@ TEST(OrientedBox, FlatRectangleGivesItsRectangle) {
   EXPECT_LT(b.size[2], 1e-9);
 }
 
-// The starts worked from side by side on a pool: the box of the serial search, to the bit, with
-// and without hints (a cylinder-like set, whose starts end in different frames).
+// The starts worked from side by side on a pool: the box of the serial search, to the bit (a
+// cylinder-like set; with hints, three starts on two threads; without, the one start inline).
 TEST(OrientedBox, APoolGivesTheSameBox) {
   std::mt19937_64 rng(4);
   std::uniform_real_distribution<double> u(-1.0, 1.0), angle(0.0, 6.283185307179586);
-  const Eigen::Matrix3d r = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d r =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   PointList pts;
   for (int i = 0; i < 6000; ++i) {
     const double a = angle(rng);
@@ -87,7 +89,8 @@ TEST(OrientedBox, APoolGivesTheSameBox) {
   }
   const Eigen::Matrix3d hint = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitX()).toRotationMatrix();
   parallel::ThreadPool pool(2);
-  for (const std::vector<Eigen::Matrix3d>& hints : {std::vector<Eigen::Matrix3d>{}, std::vector<Eigen::Matrix3d>{hint, r}}) {
+  for (const std::vector<Eigen::Matrix3d>& hints :
+       {std::vector<Eigen::Matrix3d>{}, std::vector<Eigen::Matrix3d>{hint, r}}) {
     const OrientedBox serial = oriented_bounding_box(pts, hints);
     const OrientedBox split = oriented_bounding_box(pts, hints, 2000, &pool);
     EXPECT_EQ(split.center, serial.center) << hints.size();

@@ -72,6 +72,9 @@ TEST(SegmentIsolatedTrial, ASupportInViewMakesAScene) {
   EXPECT_EQ(s.graph_nodes, as_scene.graph_nodes);
   EXPECT_EQ(s.objects, as_scene.objects);
   ASSERT_EQ(s.objects.size(), 1u);
+  // The scene's points go to their objects in blocks on two threads: the same lists.
+  parallel::ThreadPool pool(2);
+  EXPECT_EQ(segment_scene(cloud, GridLayout{}, cfg, &pool).objects, s.objects);
 }
 
 // A small ball beside a dense box: on the coarser graph the ball is a few nodes across and is
