@@ -26,10 +26,6 @@ constexpr double kSlack = 1e-8;
 // points it must look at) few.
 constexpr double kWiderCells = 4.0;
 
-std::uint64_t key_of(std::int64_t x, std::int64_t y, std::int64_t z) {
-  return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) | static_cast<std::uint64_t>(z);
-}
-
 // The same sum, in the same order, as nanoflann's L2_Simple_Adaptor: equal distances to the bit.
 double squared_distance(const Point& a, const Point& b) {
   double d2 = 0.0;
@@ -78,8 +74,8 @@ class Grid {
     for (std::size_t i = 0; i < points.size(); ++i) {
       const auto c = coords(points[i]);
       bool inserted = false;
-      const std::uint32_t s =
-          map_.find_or_insert(key_of(c[0], c[1], c[2]), static_cast<std::uint32_t>(count.size()), inserted);
+      const std::uint32_t s = map_.find_or_insert(
+          detail::cell_key(c[0], c[1], c[2]), static_cast<std::uint32_t>(count.size()), inserted);
       if (inserted) count.push_back(0);
       ++count[s];
       cell_of_[i] = s;
@@ -106,7 +102,7 @@ class Grid {
           if (std::max({std::abs(dx), std::abs(dy), std::abs(dz)}) != ring) continue;
           const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
           if (x < 0 || y < 0 || z < 0 || x > kMaxCells + 2 || y > kMaxCells + 2 || z > kMaxCells + 2) continue;
-          const std::uint32_t s = map_.find(key_of(x, y, z));
+          const std::uint32_t s = map_.find(detail::cell_key(x, y, z));
           if (s == detail::CellMap::kAbsent) continue;
           for (std::uint32_t m = begin_[s]; m < begin_[s + 1]; ++m) f(members_[m]);
         }
@@ -219,7 +215,8 @@ std::vector<double> nearest_in_blocks(const PointList& points,
         for (std::int64_t dz = -1; dz <= 1; ++dz) {
           bool inserted = false;
           const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
-          const std::uint32_t b = blocks.find_or_insert(key_of(x, y, z), block_cells, inserted);
+          const std::uint32_t b =
+              blocks.find_or_insert(detail::cell_key(x, y, z), block_cells, inserted);
           block_cells += inserted ? 1 : 0;
           pairs.emplace_back(b, static_cast<std::uint32_t>(q));
           if (in_block.empty()) continue;
@@ -254,7 +251,7 @@ std::vector<double> nearest_in_blocks(const PointList& points,
         const std::uint64_t bit = bit_of(c[0], c[1], c[2]);
         if (!((in_block[bit >> 6] >> (bit & 63)) & 1)) continue;
       }
-      const std::uint32_t slot = blocks.find(key_of(c[0], c[1], c[2]));
+      const std::uint32_t slot = blocks.find(detail::cell_key(c[0], c[1], c[2]));
       if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
         const std::uint32_t q = cell_queries[e];
@@ -371,21 +368,29 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
   const Eigen::Vector3d extent = (box.max - box.min) * inv;
   const bool valid = cell > 0.0 && std::isfinite(inv) && extent.allFinite() && extent.maxCoeff() < kMaxCells;
   std::vector<std::size_t> hard;
+  // Settles each open query `open[k]` whose least distance `best[k]` in `frame`'s blocks lies
+  // within the block's reach (nothing outside it is nearer); the others stay open.
+  const auto settle = [&](const CellFrame& frame, const std::vector<double>& best,
+                          std::vector<std::size_t>& open) {
+    std::vector<std::size_t> still;
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      const double reach = frame.reach(points[queries[open[k]]], 1);
+      if (best[k] <= reach * reach) {
+        out[open[k]] = std::sqrt(best[k]);
+      } else {
+        still.push_back(open[k]);
+      }
+    }
+    open = std::move(still);
+  };
   if (!valid) {
     for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
   } else {
     const CellFrame frame{box.min, cell, inv};
     std::optional<std::vector<double>> in_array = nearest_in_cell_array(points, queries, frame, extent, pool);
-    const std::vector<double> best =
-        in_array ? std::move(*in_array) : nearest_in_blocks(points, queries, frame, extent, pool);
-    for (std::size_t q = 0; q < queries.size(); ++q) {
-      const double reach = frame.reach(points[queries[q]], 1);
-      if (best[q] <= reach * reach) {
-        out[q] = std::sqrt(best[q]);
-      } else {
-        hard.push_back(q);
-      }
-    }
+    for (std::size_t q = 0; q < queries.size(); ++q) hard.push_back(q);
+    settle(frame, in_array ? *in_array : nearest_in_blocks(points, queries, frame, extent, pool),
+           hard);
     // Queries far from every point of their block (a sparse stretch, an outlier) once more in
     // cells kWiderCells times as wide: one pass testing each point against their blocks, where a
     // scan costs a distance a point for each of them; from two on the pass is the cheaper (on a
@@ -395,18 +400,7 @@ std::vector<double> nearest_other_distances(const PointList& points, const std::
       const CellFrame wider{box.min, wide, 1.0 / wide};
       std::vector<std::uint32_t> at;
       for (std::size_t q : hard) at.push_back(queries[q]);
-      const std::vector<double> near =
-          nearest_in_blocks(points, at, wider, extent / kWiderCells, pool);
-      std::vector<std::size_t> harder;
-      for (std::size_t h = 0; h < hard.size(); ++h) {
-        const double reach = wider.reach(points[at[h]], 1);
-        if (near[h] <= reach * reach) {
-          out[hard[h]] = std::sqrt(near[h]);
-        } else {
-          harder.push_back(hard[h]);
-        }
-      }
-      hard = std::move(harder);
+      settle(wider, nearest_in_blocks(points, at, wider, extent / kWiderCells, pool), hard);
     }
   }
   // Far from everything (an outlier) or a degenerate grid: a scan for a few, else a kd-tree.

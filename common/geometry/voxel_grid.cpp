@@ -114,15 +114,14 @@ struct VoxelSum {
 // The voxels of `points` in the order their first point comes, each with its sum, count and
 // key; `lonely` marks those with fewer than `min_occupied_neighbours` occupied among their 26
 // neighbours (only whether that many are reached matters: the search stops there). The hash map.
-std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& voxel_of, int min_occupied_neighbours,
-                                        std::vector<char>& lonely) {
-  auto key_of = [](std::uint64_t ix, std::uint64_t iy, std::uint64_t iz) { return (ix << 42) | (iy << 21) | iz; };
+std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& voxel_of,
+                                        int min_occupied_neighbours, std::vector<char>& lonely) {
   detail::CellMap slot(points.size() / 4 + 16);
   std::vector<VoxelSum> acc;
   acc.reserve(points.size() / 4 + 16);
   for (const Point& p : points) {
     const auto c = voxel_of(p);
-    const std::uint64_t key = key_of(c[0] + 1, c[1] + 1, c[2] + 1);
+    const std::uint64_t key = detail::cell_key(c[0] + 1, c[1] + 1, c[2] + 1);
     bool inserted = false;
     const std::uint32_t s = slot.find_or_insert(key, static_cast<std::uint32_t>(acc.size()), inserted);
     if (inserted) {
@@ -132,17 +131,16 @@ std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& 
     acc[s].sum += p;
     ++acc[s].count;
   }
-  constexpr std::uint64_t kMask = (1u << 21) - 1;
   lonely.assign(acc.size(), 0);
   if (min_occupied_neighbours <= 0) return acc;
   for (std::size_t v = 0; v < acc.size(); ++v) {
-    const std::uint64_t key = acc[v].key;
-    const std::uint64_t ix = key >> 42, iy = (key >> 21) & kMask, iz = key & kMask;
+    const auto [ix, iy, iz] = detail::cell_coords(acc[v].key);
     int occupied = 0;
     for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
       for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
         for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
-          if ((dx || dy || dz) && slot.find(key_of(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
+          if ((dx || dy || dz) &&
+              slot.find(detail::cell_key(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
             ++occupied;
     lonely[v] = occupied < min_occupied_neighbours;
   }
@@ -282,10 +280,9 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   detail::CellMap slot(n + 16);
   for (std::size_t i = 0; i < points.size(); i += stride) {
     const auto c = voxel_of(points[i]);
-    const std::uint64_t key = (static_cast<std::uint64_t>(c[0]) << 42) | (static_cast<std::uint64_t>(c[1]) << 21) |
-                              static_cast<std::uint64_t>(c[2]);
     bool inserted = false;
-    slot.find_or_insert(key, static_cast<std::uint32_t>(occupied), inserted);
+    slot.find_or_insert(detail::cell_key(c[0], c[1], c[2]), static_cast<std::uint32_t>(occupied),
+                        inserted);
     occupied += inserted ? 1 : 0;
   }
   return occupied;

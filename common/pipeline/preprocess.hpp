@@ -23,8 +23,8 @@ struct PreprocessedCloud {
 };
 
 // Non-finite points must have been dropped by the reader. Never throws on content:
-// too few points simply give a small (possibly empty) result. A `pool` shares the resolution's
-// searches out: the same result.
+// too few points simply give a small (possibly empty) result. A `pool` shares a large cloud's
+// passes (bounds, voxel counts) and the resolution's searches out: the same result.
 PreprocessedCloud preprocess_cloud(const PointList& raw, const config::PreprocessConfig& cfg,
                                    parallel::ThreadPool* pool = nullptr);
 

@@ -26,7 +26,7 @@ namespace cloudshape::pipeline {
 // `scan_lines`: the lidar scan lines the object lies on (0: not a lidar frame). Two lines are two
 // curves across the object: they fix a sphere (two circles of it) and no other solid, whose
 // extent between and beyond them they leave open; on two, only a sphere is tried. A `pool` fits
-// the candidates side by side: the same result.
+// the candidates, and searches the extent from its starts, side by side: the same result.
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,

@@ -139,8 +139,7 @@ class VoxelNodes {
   static constexpr double kArrayVoxelsPerPoint = 2.0;
 
   static std::uint64_t key(const std::array<std::int64_t, 3>& c) {
-    return (static_cast<std::uint64_t>(c[0]) << 42) | (static_cast<std::uint64_t>(c[1]) << 21) |
-           static_cast<std::uint64_t>(c[2]);
+    return geometry::detail::cell_key(c[0], c[1], c[2]);
   }
 
   // The map alone.
@@ -253,13 +252,8 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
   };
   const auto bin_in = [&](double v, VoxelNodes& voxels) {
     if (!packed.empty()) {
-      return bin_cells(
-          [&](std::size_t i) {
-            return std::array<std::int64_t, 3>{static_cast<std::int64_t>(packed[i] >> 42),
-                                               static_cast<std::int64_t>((packed[i] >> 21) & 0x1FFFFF),
-                                               static_cast<std::int64_t>(packed[i] & 0x1FFFFF)};
-          },
-          voxels);
+      return bin_cells([&](std::size_t i) { return geometry::detail::cell_coords(packed[i]); },
+                       voxels);
     }
     return bin_cells([&](std::size_t i) { return cell_of(points[i], v); }, voxels);
   };
@@ -299,10 +293,7 @@ NeighbourGraph build_in(const PointList& points, const geometry::Bounds& box, do
     auto& found = pairs_of_block[begin / kNodesPerBlock];
     found.reserve((end - begin) * 6);
     for (std::size_t n = begin; n < end; ++n) {
-      const Key key = keys[n];
-      const std::int64_t x = static_cast<std::int64_t>(key >> 42);
-      const std::int64_t y = static_cast<std::int64_t>((key >> 21) & 0x1FFFFF);
-      const std::int64_t z = static_cast<std::int64_t>(key & 0x1FFFFF);
+      const auto [x, y, z] = geometry::detail::cell_coords(keys[n]);
       for (int dx = 0; dx <= 1; ++dx) {
         for (int dy = dx == 0 ? 0 : -1; dy <= 1; ++dy) {
           for (int dz = dx == 0 && dy == 0 ? 1 : -1; dz <= 1; ++dz) {

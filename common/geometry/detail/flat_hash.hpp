@@ -2,10 +2,24 @@
 // raster grids: several times faster than std::unordered_map on these hot loops.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
 namespace cloudshape::geometry::detail {
+
+// A grid cell's key in a CellMap: 21 bits a coordinate (each in [0, 2^21)), x highest.
+inline std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
+  return (static_cast<std::uint64_t>(x) << 42) | (static_cast<std::uint64_t>(y) << 21) |
+         static_cast<std::uint64_t>(z);
+}
+
+// The coordinates a cell_key holds.
+inline std::array<std::int64_t, 3> cell_coords(std::uint64_t key) {
+  constexpr std::uint64_t kMask = (std::uint64_t{1} << 21) - 1;
+  return {static_cast<std::int64_t>(key >> 42), static_cast<std::int64_t>((key >> 21) & kMask),
+          static_cast<std::int64_t>(key & kMask)};
+}
 
 class CellMap {
  public:
