@@ -2,8 +2,13 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "geometry/circle.hpp"
 
@@ -53,6 +58,52 @@ Sphere sphere_from(const Point& a, const Point& b, const Point& c, const Point& 
   return best;
 }
 
+// The first of points [begin, end) outside s (outside's answer for each), or end. Most points
+// are settled by their squared distance against the threshold's square widened by a millionth
+// either way (far beyond any rounding of either side); only those within that band take the
+// exact test. The incremental loops spend most of their time in these scans.
+std::size_t first_outside(const Sphere& s, const PointList& points, std::size_t begin,
+                          std::size_t end) {
+  const double threshold = s.radius * (1.0 + 1e-10) + 1e-12;
+  const double inside_below = threshold * threshold * (1.0 - 1e-6);
+  const double outside_above = threshold * threshold * (1.0 + 1e-6);
+  if (!std::isfinite(outside_above)) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (outside(s, points[i])) return i;
+    }
+    return end;
+  }
+  const auto settle = [&](std::size_t i, double d2) {
+    return d2 >= outside_above || (d2 > inside_below && outside(s, points[i]));
+  };
+  std::size_t i = begin;
+#if defined(__SSE2__)
+  // Two points at a time: a pair both well inside (most) costs one branch.
+  const __m128d cx = _mm_set1_pd(s.center.x()), cy = _mm_set1_pd(s.center.y()),
+                cz = _mm_set1_pd(s.center.z());
+  const __m128d below = _mm_set1_pd(inside_below);
+  for (; i + 2 <= end; i += 2) {
+    const Point& a = points[i];
+    const Point& b = points[i + 1];
+    const __m128d dx = _mm_sub_pd(_mm_set_pd(b.x(), a.x()), cx);
+    const __m128d dy = _mm_sub_pd(_mm_set_pd(b.y(), a.y()), cy);
+    const __m128d dz = _mm_sub_pd(_mm_set_pd(b.z(), a.z()), cz);
+    const __m128d d2 =
+        _mm_add_pd(_mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy)), _mm_mul_pd(dz, dz));
+    if (_mm_movemask_pd(_mm_cmple_pd(d2, below)) == 3) continue;
+    alignas(16) double lane[2];
+    _mm_store_pd(lane, d2);
+    if (settle(i, lane[0])) return i;
+    if (settle(i + 1, lane[1])) return i + 1;
+  }
+#endif
+  for (; i < end; ++i) {
+    const Eigen::Vector3d d = points[i] - s.center;
+    if (settle(i, d.x() * d.x() + d.y() * d.y() + d.z() * d.z())) return i;
+  }
+  return end;
+}
+
 }  // namespace
 
 Sphere minimal_enclosing_sphere(const PointList& input) {
@@ -61,21 +112,21 @@ Sphere minimal_enclosing_sphere(const PointList& input) {
   std::iota(order.begin(), order.end(), 0u);
   std::mt19937 rng(0x5eed);
   std::shuffle(order.begin(), order.end(), rng);
-  auto at = [&](std::size_t i) -> const Point& { return input[order[i]]; };
+  // The points in that order, side by side: the scans read them in sequence.
+  PointList at(input.size());
+  for (std::size_t i = 0; i < at.size(); ++i) at[i] = input[order[i]];
 
-  Sphere s{at(0), 0.0};
-  for (std::size_t i = 1; i < order.size(); ++i) {
-    if (!outside(s, at(i))) continue;
-    s = {at(i), 0.0};
-    for (std::size_t j = 0; j < i; ++j) {
-      if (!outside(s, at(j))) continue;
-      s = sphere_from(at(i), at(j));
-      for (std::size_t k = 0; k < j; ++k) {
-        if (!outside(s, at(k))) continue;
-        s = sphere_from(at(i), at(j), at(k));
-        for (std::size_t l = 0; l < k; ++l) {
-          if (!outside(s, at(l))) continue;
-          s = sphere_from(at(i), at(j), at(k), at(l));
+  Sphere s{at[0], 0.0};
+  for (std::size_t i = first_outside(s, at, 1, at.size()); i < at.size();
+       i = first_outside(s, at, i + 1, at.size())) {
+    s = {at[i], 0.0};
+    for (std::size_t j = first_outside(s, at, 0, i); j < i; j = first_outside(s, at, j + 1, i)) {
+      s = sphere_from(at[i], at[j]);
+      for (std::size_t k = first_outside(s, at, 0, j); k < j; k = first_outside(s, at, k + 1, j)) {
+        s = sphere_from(at[i], at[j], at[k]);
+        for (std::size_t l = first_outside(s, at, 0, k); l < k;
+             l = first_outside(s, at, l + 1, k)) {
+          s = sphere_from(at[i], at[j], at[k], at[l]);
         }
       }
     }

@@ -1,4 +1,4 @@
-// The minimal sphere enclosing a point set (Welzl's algorithm, move-to-front form),
+// The minimal sphere enclosing a point set (Welzl's algorithm, in its incremental form),
 // the reference centre of the thesis' vertex pursuit (3.1).
 #pragma once
 

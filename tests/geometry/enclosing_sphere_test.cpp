@@ -130,5 +130,35 @@ TEST(MinimalEnclosingSphere, CoplanarAndCollinearSetsAreHandled) {
   EXPECT_NEAR(minimal_enclosing_sphere(square).radius, 2.0 * std::sqrt(2.0), 1e-9);
 }
 
+// A cone's base rim: thousands of points within a hair of one sphere, each a restart of the
+// incremental loops; the sphere is the rim's (the apex lies inside it), found as exactly.
+TEST(MinimalEnclosingSphere, AConesRimOfNearlyCosphericalPoints) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846),
+      jitter(-1e-7, 1e-7);
+  PointList pts{Point(0, 0, 4)};
+  for (int i = 0; i < 5000; ++i) {
+    const double t = angle(rng), r = 10.0 * (1.0 + jitter(rng));
+    pts.emplace_back(r * std::cos(t), r * std::sin(t), jitter(rng));
+  }
+  const Sphere s = minimal_enclosing_sphere(pts);
+  EXPECT_NEAR(s.radius, 10.0, 1e-5);
+  EXPECT_LT(s.center.norm(), 1e-5);
+  EXPECT_TRUE(encloses(s, pts, 1e-9));
+}
+
+// Far from the origin and at any scale, the same sphere (shifted, scaled).
+TEST(MinimalEnclosingSphere, FarAndHugeCoordinates) {
+  const PointList unit{Point(0, 0, 0), Point(2, 0, 0), Point(1, 0.5, 0), Point(1, 0, 0.5)};
+  for (const double scale : {1e-3, 1.0, 1e6, 1e100}) {
+    PointList pts;
+    for (const Point& p : unit) pts.push_back(Point(1e3, -2e3, 5e2) + scale * p);
+    const Sphere s = minimal_enclosing_sphere(pts);
+    EXPECT_NEAR(s.radius / scale, 1.0, 1e-9) << "scale " << scale;
+    EXPECT_LT((s.center - (Point(1e3, -2e3, 5e2) + scale * Point(1, 0, 0))).norm() / scale, 1e-9)
+        << "scale " << scale;
+  }
+}
+
 }  // namespace
 }  // namespace cloudshape::geometry
