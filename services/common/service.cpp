@@ -1,16 +1,15 @@
 #include "common/service.hpp"
 
-#include <malloc.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <climits>
 #include <csignal>
 #include <cstdlib>
 
 #include "dds/participant_cli.hpp"
+#include "parallel/retained_memory.hpp"
 
 namespace cloudshape::service {
 namespace {
@@ -18,17 +17,6 @@ namespace {
 std::atomic<bool> g_stop{false};  // the signal flag
 
 void on_signal(int) { g_stop = true; }
-
-// glibc hands blocks above its mmap threshold back to the system when freed and trims the heap
-// top above its trim threshold: a 640 x 480 frame's buffers (points, graph, grids: tens of MB)
-// were then faulted in page by page again for every frame, 11% of ingest's CPU.
-void retain_memory(const config::ExecutionConfig& execution) {
-  if (execution.retained_memory_mb <= 0) return;
-  constexpr std::int64_t kMaxMmapThreshold = 32 << 20;  // glibc's ceiling on 64-bit hosts
-  const std::int64_t bytes = std::min<std::int64_t>(execution.retained_memory_mb, INT32_MAX >> 20) << 20;
-  mallopt(M_TRIM_THRESHOLD, static_cast<int>(bytes));
-  mallopt(M_MMAP_THRESHOLD, static_cast<int>(std::min(bytes, kMaxMmapThreshold)));
-}
 
 }  // namespace
 
@@ -82,13 +70,13 @@ config::PipelineConfig load_config(const Options& opt) {
     spdlog::info("configuration: built-in defaults");
     config::PipelineConfig cfg;
     if (opt.threads) cfg.execution.threads = static_cast<std::int64_t>(*opt.threads);
-    retain_memory(cfg.execution);
+    parallel::retain_freed_memory(cfg.execution.retained_memory_mb);
     return cfg;
   }
   spdlog::info("configuration: {}", path);
   config::PipelineConfig cfg = config::load_pipeline_config(path);
   if (opt.threads) cfg.execution.threads = static_cast<std::int64_t>(*opt.threads);
-  retain_memory(cfg.execution);
+  parallel::retain_freed_memory(cfg.execution.retained_memory_mb);
   return cfg;
 }
 

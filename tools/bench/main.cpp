@@ -29,12 +29,13 @@
 #include "accuracy.hpp"
 #include "bench_stats.hpp"
 #include "config/pipeline_config.hpp"
+#include "parallel/retained_memory.hpp"
 #include "parallel/thread_pool.hpp"
+#include "pipeline/recognize.hpp"
 #include "scene_bench.hpp"
 #include "speed_shapes.hpp"
-#include "pipeline/recognize.hpp"
-#include "synth/perturb.hpp"
 #include "synth/ground_truth.hpp"
+#include "synth/perturb.hpp"
 
 namespace {
 
@@ -214,6 +215,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (threads >= 0) cfg.execution.threads = threads;
+  // Cloud after cloud (and stage after stage of one), freed buffers are kept for the next, as
+  // in the services.
+  cs::parallel::retain_freed_memory(cfg.execution.retained_memory_mb);
   cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
   if (accuracy) {
     if (count <= 0 || max_points == 0) {

@@ -26,9 +26,10 @@
 #include "cloud_inputs.hpp"
 #include "config/pipeline_config.hpp"
 #include "io/pointcloud2_encode.hpp"
-#include "recording/result_recorder.hpp"
+#include "parallel/retained_memory.hpp"
 #include "picture_folder.hpp"
 #include "pipeline/recognize.hpp"
+#include "recording/result_recorder.hpp"
 #include "render/picture_png.hpp"
 #include "report/result_json.hpp"
 #include "report/result_table.hpp"
@@ -168,6 +169,9 @@ int main(int argc, char** argv) {
   }
 
   if (threads >= 0) cfg.execution.threads = threads;
+  // Cloud after cloud (and stage after stage of one), freed buffers are kept for the next, as
+  // in the services.
+  cs::parallel::retain_freed_memory(cfg.execution.retained_memory_mb);
   cs::parallel::ThreadPool pool(static_cast<std::size_t>(cfg.execution.threads));
   spdlog::debug("recognition threads: {}", pool.size());
 
