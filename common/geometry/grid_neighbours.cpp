@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -183,51 +184,72 @@ std::vector<double> nearest_in_blocks(const PointList& points,
                                       const std::vector<std::uint32_t>& queries,
                                       const CellFrame& frame, const Eigen::Vector3d& extent,
                                       parallel::ThreadPool* pool) {
-  detail::CellMap blocks(queries.size() * 27);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;  // (block cell, query)
+  // Every (block cell, query) pair, the cell by its packed key.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
   pairs.reserve(queries.size() * 27);
-  std::uint32_t block_cells = 0;
-  // A bit per cell of that box (with the coordinates' margin), set where a block lies: most points
-  // lie in no block, and a bit in a small array tells so sooner than the map, whose lookups miss
-  // the cache. None where the array would take more than two bytes a point, or a block reaches
-  // beyond it (bounds that are not the points' own).
+  for (std::size_t q = 0; q < queries.size(); ++q) {
+    const auto c = frame.coords(points[queries[q]]);
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dz = -1; dz <= 1; ++dz)
+          pairs.emplace_back(detail::cell_key(c[0] + dx, c[1] + dy, c[2] + dz),
+                             static_cast<std::uint32_t>(q));
+      }
+    }
+  }
+  // A bit per cell of that box (with the coordinates' margin), set where a block lies, and per
+  // 64-bit word the bits set before it: a point tests its cell's bit (most lie in no block), and
+  // a block cell's number is its bit's rank, with no hash map, whose lookups miss the cache. Where
+  // the bits would take more than two bytes a point, or a block reaches beyond them (bounds that
+  // are not the points' own), the cells go into the map instead.
   std::array<std::uint64_t, 3> dims{};
   double bits = 1.0;
   for (int a = 0; a < 3; ++a) {
     dims[a] = static_cast<std::uint64_t>(std::max(0.0, extent[a])) + 3;
     bits *= static_cast<double>(dims[a]);
   }
+  const auto bit_of = [&dims](const std::array<std::int64_t, 3>& c) {
+    return (static_cast<std::uint64_t>(c[0]) * dims[1] + static_cast<std::uint64_t>(c[1])) *
+               dims[2] +
+           static_cast<std::uint64_t>(c[2]);
+  };
+  const auto in_bits = [&dims](const std::array<std::int64_t, 3>& c) {
+    return static_cast<std::uint64_t>(c[0]) < dims[0] &&
+           static_cast<std::uint64_t>(c[1]) < dims[1] && static_cast<std::uint64_t>(c[2]) < dims[2];
+  };
+  bool by_rank = bits <= 16.0 * static_cast<double>(points.size());
+  for (std::size_t p = 0; by_rank && p < pairs.size(); ++p)
+    by_rank = in_bits(detail::cell_coords(pairs[p].first));
   std::vector<std::uint64_t> in_block;
-  if (bits <= 16.0 * static_cast<double>(points.size()))
+  std::vector<std::uint32_t> word_rank;
+  const auto rank_of = [&](std::uint64_t bit, std::uint64_t word) {
+    return word_rank[bit >> 6] +
+           static_cast<std::uint32_t>(
+               std::bitset<64>(word & ((std::uint64_t{1} << (bit & 63)) - 1)).count());
+  };
+  detail::CellMap blocks(by_rank ? 16 : queries.size() * 27);
+  std::vector<std::uint32_t> slot_of_pair(pairs.size());
+  std::uint32_t block_cells = 0;
+  if (by_rank) {
     in_block.assign((static_cast<std::size_t>(bits) + 63) / 64, 0);
-  const auto bit_of = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return (static_cast<std::uint64_t>(x) * dims[1] + static_cast<std::uint64_t>(y)) * dims[2] +
-           static_cast<std::uint64_t>(z);
-  };
-  const auto in_bits = [&dims](std::int64_t x, std::int64_t y, std::int64_t z) {
-    return static_cast<std::uint64_t>(x) < dims[0] && static_cast<std::uint64_t>(y) < dims[1] &&
-           static_cast<std::uint64_t>(z) < dims[2];
-  };
-  for (std::size_t q = 0; q < queries.size(); ++q) {
-    const auto c = frame.coords(points[queries[q]]);
-    for (std::int64_t dx = -1; dx <= 1; ++dx) {
-      for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        for (std::int64_t dz = -1; dz <= 1; ++dz) {
-          bool inserted = false;
-          const std::int64_t x = c[0] + dx, y = c[1] + dy, z = c[2] + dz;
-          const std::uint32_t b =
-              blocks.find_or_insert(detail::cell_key(x, y, z), block_cells, inserted);
-          block_cells += inserted ? 1 : 0;
-          pairs.emplace_back(b, static_cast<std::uint32_t>(q));
-          if (in_block.empty()) continue;
-          if (!in_bits(x, y, z)) {
-            in_block.clear();
-            continue;
-          }
-          const std::uint64_t bit = bit_of(x, y, z);
-          in_block[bit >> 6] |= std::uint64_t{1} << (bit & 63);
-        }
-      }
+    for (const auto& pair : pairs) {
+      const std::uint64_t bit = bit_of(detail::cell_coords(pair.first));
+      in_block[bit >> 6] |= std::uint64_t{1} << (bit & 63);
+    }
+    word_rank.assign(in_block.size() + 1, 0);
+    for (std::size_t w = 0; w < in_block.size(); ++w)
+      word_rank[w + 1] =
+          word_rank[w] + static_cast<std::uint32_t>(std::bitset<64>(in_block[w]).count());
+    block_cells = word_rank.back();
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      const std::uint64_t bit = bit_of(detail::cell_coords(pairs[p].first));
+      slot_of_pair[p] = rank_of(bit, in_block[bit >> 6]);
+    }
+  } else {
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      bool inserted = false;
+      slot_of_pair[p] = blocks.find_or_insert(pairs[p].first, block_cells, inserted);
+      block_cells += inserted ? 1 : 0;
     }
   }
   // The queries' points side by side: a hit reads them there, not across the whole cloud.
@@ -235,10 +257,11 @@ std::vector<double> nearest_in_blocks(const PointList& points,
   query_point.reserve(queries.size());
   for (std::uint32_t q : queries) query_point.push_back(points[q]);
   std::vector<std::uint32_t> cell_begin(block_cells + 1, 0), cell_queries(pairs.size());
-  for (const auto& pair : pairs) ++cell_begin[pair.first + 1];
+  for (const std::uint32_t b : slot_of_pair) ++cell_begin[b + 1];
   for (std::size_t b = 1; b < cell_begin.size(); ++b) cell_begin[b] += cell_begin[b - 1];
   std::vector<std::uint32_t> next(cell_begin.begin(), cell_begin.end() - 1);
-  for (const auto& [b, q] : pairs) cell_queries[next[b]++] = q;
+  for (std::size_t p = 0; p < pairs.size(); ++p)
+    cell_queries[next[slot_of_pair[p]]++] = pairs[p].second;
   // Blocks of points on the pool, each with its own minima; a minimum is the same in any order.
   constexpr std::size_t kPointsPerBlock = 16384;
   std::vector<std::vector<double>> best_of_block((points.size() + kPointsPerBlock - 1) / kPointsPerBlock);
@@ -247,12 +270,18 @@ std::vector<double> nearest_in_blocks(const PointList& points,
     best.assign(queries.size(), std::numeric_limits<double>::infinity());
     for (std::size_t i = begin; i < end; ++i) {
       const auto c = frame.coords(points[i]);
-      if (!in_block.empty() && in_bits(c[0], c[1], c[2])) {
-        const std::uint64_t bit = bit_of(c[0], c[1], c[2]);
-        if (!((in_block[bit >> 6] >> (bit & 63)) & 1)) continue;
+      std::uint32_t slot = detail::CellMap::kAbsent;
+      if (by_rank) {
+        // Every block cell lies inside the bits: a point outside them is in none.
+        if (!in_bits(c)) continue;
+        const std::uint64_t bit = bit_of(c);
+        const std::uint64_t word = in_block[bit >> 6];
+        if (!((word >> (bit & 63)) & 1)) continue;
+        slot = rank_of(bit, word);
+      } else {
+        slot = blocks.find(detail::cell_key(c[0], c[1], c[2]));
+        if (slot == detail::CellMap::kAbsent) continue;
       }
-      const std::uint32_t slot = blocks.find(detail::cell_key(c[0], c[1], c[2]));
-      if (slot == detail::CellMap::kAbsent) continue;
       for (std::uint32_t e = cell_begin[slot]; e < cell_begin[slot + 1]; ++e) {
         const std::uint32_t q = cell_queries[e];
         if (queries[q] != i)

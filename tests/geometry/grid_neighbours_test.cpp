@@ -94,6 +94,25 @@ TEST(GridNeighbours, NearestOtherIsExactWhereTheCellsOutnumberThePoints) {
   }
 }
 
+// Bounds that are not the points' own (smaller: some of the queries' blocks reach beyond them)
+// take the hash map of block cells instead of the bits over the bounds: the same distances.
+TEST(GridNeighbours, NearestOtherIsExactWithBoundsSmallerThanThePoints) {
+  const PointList pts = volume(250000, 8);
+  std::vector<std::uint32_t> queries;
+  for (std::uint32_t i = 0; i < pts.size(); i += 499) queries.push_back(i);
+  Bounds smaller = bounding_box(pts);
+  smaller.max = smaller.min + 0.8 * (smaller.max - smaller.min);
+  parallel::ThreadPool two(2);
+  const KdTree tree(pts);
+  for (parallel::ThreadPool* pool : {static_cast<parallel::ThreadPool*>(nullptr), &two}) {
+    const std::vector<double> got = nearest_other_distances(pts, queries, pool, &smaller);
+    for (std::size_t q = 0; q < queries.size(); ++q) {
+      EXPECT_EQ(got[q], std::sqrt(tree.nearest_other_sq_dist(queries[q])))
+          << "query " << queries[q];
+    }
+  }
+}
+
 // Points off a surface by two to three of the grid's cells have no neighbour in their own block
 // of cells: a search in wider cells answers them together, the farthest a scan. Every answer as
 // brute force's.
