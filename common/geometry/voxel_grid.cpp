@@ -219,6 +219,61 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
   return out;
 }
 
+namespace {
+
+// The occupied voxels of points[0], points[stride], ... (n of them) as bits of a dense array of
+// `dims` cells, voxel c at cell c + margin on each axis, and how many are set. A large cloud's
+// points in one part per thread, each setting the bits of its own array, joined into the first:
+// the same bits, whatever the parts. Nothing when a point lies outside the array.
+std::optional<std::pair<std::vector<std::uint64_t>, std::uint64_t>> occupancy_bits(
+    const PointList& points, std::size_t n, std::size_t stride, const VoxelOf& voxel_of,
+    const std::array<std::uint64_t, 3>& dims, std::uint64_t margin, parallel::ThreadPool* pool) {
+  const std::uint64_t cells = dims[0] * dims[1] * dims[2];
+  const std::size_t threads = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
+  const std::size_t per_part = (n + threads - 1) / threads;
+  const std::size_t parts = (n + per_part - 1) / per_part;  // for_blocks' count: at most `threads`
+  std::vector<std::vector<std::uint64_t>> bits(parts);
+  std::vector<std::uint64_t> set(parts, 0);  // bits each part set first: its own count
+  std::vector<char> inside(parts, 1);
+  parallel::for_blocks(pool, n, per_part, [&](std::size_t first, std::size_t last) {
+    std::vector<std::uint64_t>& own = bits[first / per_part];
+    own.assign((cells + 63) / 64, 0);
+    // Locals, not the captures: kept in registers across the points.
+    const VoxelOf to_voxel = voxel_of;
+    const std::array<std::uint64_t, 3> d = dims;
+    const std::uint64_t m = margin;
+    std::uint64_t* const words = own.data();
+    std::uint64_t count = 0;
+    for (std::size_t s = first; s < last; ++s) {
+      const auto c = to_voxel(points[s * stride]);
+      if (!in_dense(c, d, m)) {
+        inside[first / per_part] = 0;
+        return;
+      }
+      const std::uint64_t cell =
+          ((static_cast<std::uint64_t>(c[0]) + m) * d[1] + static_cast<std::uint64_t>(c[1]) + m) *
+              d[2] +
+          static_cast<std::uint64_t>(c[2]) + m;
+      std::uint64_t& word = words[cell >> 6];
+      const std::uint64_t bit = std::uint64_t{1} << (cell & 63);
+      count += (word & bit) == 0 ? 1 : 0;
+      word |= bit;
+    }
+    set[first / per_part] = count;
+  });
+  if (std::find(inside.begin(), inside.end(), 0) != inside.end()) return std::nullopt;
+  if (parts == 1) return std::make_pair(std::move(bits.front()), set.front());
+  std::uint64_t occupied = 0;
+  std::vector<std::uint64_t>& joined = bits.front();
+  for (std::size_t w = 0; w < joined.size(); ++w) {
+    for (std::size_t k = 1; k < parts; ++k) joined[w] |= bits[k][w];
+    occupied += std::bitset<64>(joined[w]).count();
+  }
+  return std::make_pair(std::move(joined), occupied);
+}
+
+}  // namespace
+
 std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds,
                                   std::size_t stride, parallel::ThreadPool* pool) {
   const std::size_t n = points.empty() ? 0 : (points.size() - 1) / stride + 1;
@@ -230,54 +285,14 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   const VoxelOf voxel_of{b.min, inv};
   // A bit per voxel while that is at most 8 bytes a point (a map takes 24 or more).
   const auto dims = dense_dims(b, inv, 0, 64.0 * static_cast<double>(n));
-  std::uint64_t occupied = 0;
   if (dims[0] > 0) {
-    const std::uint64_t cells = dims[0] * dims[1] * dims[2];
-    // A large cloud's points in one part per thread, each setting the bits of its own array; the
-    // occupied voxels are the bits of their union, whatever the parts.
-    const std::size_t threads = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
-    const std::size_t per_part = (n + threads - 1) / threads;
-    const std::size_t parts = (n + per_part - 1) / per_part;  // for_blocks' count: at most `threads`
-    std::vector<std::vector<std::uint64_t>> bits(parts);
-    std::vector<std::uint64_t> set(parts, 0);  // bits each part set first: its own count
-    std::vector<char> inside(parts, 1);
-    parallel::for_blocks(pool, n, per_part, [&](std::size_t first, std::size_t last) {
-      std::vector<std::uint64_t>& own = bits[first / per_part];
-      own.assign((cells + 63) / 64, 0);
-      // Locals, not the captures: kept in registers across the points.
-      const VoxelOf to_voxel = voxel_of;
-      const std::array<std::uint64_t, 3> d = dims;
-      std::uint64_t* const words = own.data();
-      std::uint64_t count = 0;
-      for (std::size_t s = first; s < last; ++s) {
-        const auto c = to_voxel(points[s * stride]);
-        if (!in_dense(c, d, 0)) {
-          inside[first / per_part] = 0;
-          return;
-        }
-        const std::uint64_t cell =
-            (static_cast<std::uint64_t>(c[0]) * d[1] + static_cast<std::uint64_t>(c[1])) * d[2] +
-            static_cast<std::uint64_t>(c[2]);
-        std::uint64_t& word = words[cell >> 6];
-        const std::uint64_t bit = std::uint64_t{1} << (cell & 63);
-        count += (word & bit) == 0 ? 1 : 0;
-        word |= bit;
-      }
-      set[first / per_part] = count;
-    });
-    if (std::find(inside.begin(), inside.end(), 0) == inside.end()) {
-      if (parts == 1) return set.front();
-      for (std::size_t w = 0; w < bits.front().size(); ++w) {
-        std::uint64_t word = 0;
-        for (const auto& own : bits) word |= own[w];
-        occupied += std::bitset<64>(word).count();
-      }
-      return occupied;
-    }
+    if (const auto bits = occupancy_bits(points, n, stride, voxel_of, dims, 0, pool))
+      return bits->second;
   }
   // Room for a voxel per point: the finest voxel of a search often holds one or two points, and
   // a map that grows rehashes every key it has.
   detail::CellMap slot(n + 16);
+  std::uint64_t occupied = 0;
   for (std::size_t i = 0; i < points.size(); i += stride) {
     const auto c = voxel_of(points[i]);
     bool inserted = false;
@@ -286,6 +301,48 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
     occupied += inserted ? 1 : 0;
   }
   return occupied;
+}
+
+std::size_t downsampled_size(const PointList& points, double voxel_size,
+                             int min_occupied_neighbours, const Bounds* bounds,
+                             parallel::ThreadPool* pool) {
+  if (!(voxel_size > 0.0) || points.empty()) return points.size();
+  const Bounds b = bounds ? *bounds : bounding_box(points, 1, pool);
+  const double inv = 1.0 / voxel_size;
+  if (!grid_fits(b, inv)) return points.size();
+  // A bit per voxel with one of margin either side (the neighbours need no bounds test), while
+  // that is at most 8 bytes a point; else the grid itself.
+  const auto dims = dense_dims(b, inv, 1, 64.0 * static_cast<double>(points.size()));
+  const auto bits =
+      dims[0] > 0 ? occupancy_bits(points, points.size(), 1, VoxelOf{b.min, inv}, dims, 1, pool)
+                  : std::nullopt;
+  if (!bits)
+    return voxel_grid_downsample(points, voxel_size, min_occupied_neighbours, nullptr, &b).size();
+  const auto& [words, occupied] = *bits;
+  if (min_occupied_neighbours <= 0) return occupied;
+  // voxel_grid_downsample's isolated voxels: fewer occupied among their 26 neighbours.
+  const std::int64_t step[3] = {static_cast<std::int64_t>(dims[1] * dims[2]),
+                                static_cast<std::int64_t>(dims[2]), 1};
+  const auto occupied_at = [&words](std::int64_t cell) {
+    return (words[static_cast<std::size_t>(cell) >> 6] >> (cell & 63)) & 1;
+  };
+  std::uint64_t lonely = 0;
+  for (std::size_t w = 0; w < words.size(); ++w) {
+    for (std::uint64_t rest = words[w]; rest != 0; rest &= rest - 1) {
+      const auto cell =
+          static_cast<std::int64_t>(w * 64 + static_cast<std::size_t>(__builtin_ctzll(rest)));
+      int neighbours = 0;
+      for (int dx = -1; dx <= 1 && neighbours < min_occupied_neighbours; ++dx)
+        for (int dy = -1; dy <= 1 && neighbours < min_occupied_neighbours; ++dy)
+          for (int dz = -1; dz <= 1 && neighbours < min_occupied_neighbours; ++dz)
+            if ((dx || dy || dz) && occupied_at(cell + dx * step[0] + dy * step[1] + dz * step[2]))
+              ++neighbours;
+      lonely += neighbours < min_occupied_neighbours ? 1 : 0;
+    }
+  }
+  // As there: many isolated voxels mean a grid finer than the sampling, and none is dropped.
+  if (lonely * 4 > occupied) lonely = 0;
+  return occupied - lonely;
 }
 
 namespace {

@@ -35,6 +35,13 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
 std::size_t count_occupied_voxels(const PointList& points, double voxel_size, const Bounds* bounds = nullptr,
                                   std::size_t stride = 1, parallel::ThreadPool* pool = nullptr);
 
+// voxel_grid_downsample(points, voxel_size, min_occupied_neighbours).size() (isolated voxels left
+// out as there) without building the points: for a search of the voxel size over the whole cloud.
+// `bounds` and `pool` as above.
+std::size_t downsampled_size(const PointList& points, double voxel_size,
+                             int min_occupied_neighbours, const Bounds* bounds = nullptr,
+                             parallel::ThreadPool* pool = nullptr);
+
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.
 // A `pool` shares the grid's pass over the points out (large clouds): the same value. `bounds`

@@ -67,6 +67,39 @@ TEST(VoxelGrid, CountOfOccupiedVoxelsIsTheDownsampledSize) {
   EXPECT_EQ(count_occupied_voxels({}, 1.0), 0u);
 }
 
+// The size a grid would have, counted from the voxels' bits (isolated ones left out as the grid
+// leaves them out, or all kept where they are many), with and without a pool, and from the grid
+// itself where the bits would be too many or a point lies outside the bounds given.
+TEST(VoxelGrid, DownsampledSizeIsTheGridsSize) {
+  std::mt19937_64 rng(4);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  PointList pts;
+  for (int i = 0; i < 300000; ++i)
+    pts.emplace_back(u(rng), 0.5 * u(rng), 0.02 * u(rng) + 0.1 * std::sin(3.0 * i));
+  for (int i = 0; i < 40; ++i)
+    pts.emplace_back(3.0 + 0.5 * i, 2.0, 1.0);  // isolated voxels at most voxels
+  parallel::ThreadPool two(2);
+  for (double voxel : {0.0005, 0.01, 0.05, 0.2, 0.9, 0.0, -1.0}) {
+    for (int neighbours : {0, 2, 5}) {
+      const std::size_t grid = voxel_grid_downsample(pts, voxel, neighbours).size();
+      EXPECT_EQ(downsampled_size(pts, voxel, neighbours), grid)
+          << "voxel " << voxel << ", " << neighbours;
+      EXPECT_EQ(downsampled_size(pts, voxel, neighbours, nullptr, &two), grid)
+          << "voxel " << voxel << ", " << neighbours;
+    }
+  }
+  // The filter's own rule: a cloud of mostly isolated voxels keeps them all.
+  const PointList sparse = grid(20, 1.0);
+  EXPECT_EQ(downsampled_size(sparse, 0.3, 2), voxel_grid_downsample(sparse, 0.3, 2).size());
+  EXPECT_EQ(downsampled_size(sparse, 0.3, 2), sparse.size());
+  Bounds wrong;
+  wrong.min = Point(-1.0, -0.5, -0.1);
+  wrong.max = Point(0.0, 0.0, 0.0);
+  EXPECT_EQ(downsampled_size(pts, 0.05, 2, &wrong, &two),
+            voxel_grid_downsample(pts, 0.05, 2).size());
+  EXPECT_EQ(downsampled_size({}, 1.0, 2), 0u);
+}
+
 // The centroids in the order of each voxel's first point, summed in point order: what both the
 // dense array (a compact cloud) and the hash map (a sparse one) must give to the bit.
 PointList reference_centroids(const PointList& pts, double voxel) {
