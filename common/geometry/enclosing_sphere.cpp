@@ -108,13 +108,15 @@ std::size_t first_outside(const Sphere& s, const PointList& points, std::size_t 
 
 Sphere minimal_enclosing_sphere(const PointList& input) {
   if (input.empty()) return {};
-  std::vector<std::uint32_t> order(input.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::mt19937 rng(0x5eed);
-  std::shuffle(order.begin(), order.end(), rng);
-  // The points in that order, side by side: the scans read them in sequence.
+  // The points in a fixed pseudo-random order, side by side: the scans read them in sequence.
   PointList at(input.size());
-  for (std::size_t i = 0; i < at.size(); ++i) at[i] = input[order[i]];
+  {
+    std::vector<std::uint32_t> order(input.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::mt19937 rng(0x5eed);
+    std::shuffle(order.begin(), order.end(), rng);
+    for (std::size_t i = 0; i < at.size(); ++i) at[i] = input[order[i]];
+  }
 
   Sphere s{at[0], 0.0};
   for (std::size_t i = first_outside(s, at, 1, at.size()); i < at.size();

@@ -177,9 +177,10 @@ bool nearest_in_wider_rings(const Grid& grid, const PointList& points, std::uint
 }
 
 // The least squared distance from each query to another point of its 27-cell block (infinity if
-// none): the cells of the queries' blocks in a map, each with the queries it serves, then one pass
-// over the points, each tested against the blocks, instead of binning them all. `extent`: the
-// box of `frame`'s cells the points lie in (the bounds the caller passed), in cells.
+// none): the cells of the queries' blocks numbered (by their bit's rank, or in a map), each with
+// the queries it serves, then one pass over the points, each tested against the blocks, instead
+// of binning them all. `extent`: the box of `frame`'s cells the points lie in (the bounds the
+// caller passed), in cells.
 std::vector<double> nearest_in_blocks(const PointList& points,
                                       const std::vector<std::uint32_t>& queries,
                                       const CellFrame& frame, const Eigen::Vector3d& extent,

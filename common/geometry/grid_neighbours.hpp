@@ -14,8 +14,9 @@ namespace cloudshape::geometry {
 // Distance from points[i] to its nearest other point, for each i of `queries`, in their order
 // (exact: a query whose neighbour the grid cannot vouch for is searched again in wider cells, and
 // one those cannot vouch for either by a scan or a kd-tree).
-// With a `pool`, blocks of points run on its threads: the same distances. `bounds`, if given, must
-// be bounding_box(points) (a caller that has it saves the pass).
+// With a `pool`, blocks of points run on its threads: the same distances. `bounds`, if given,
+// should be bounding_box(points) (a caller that has it saves the pass); any other box gives the
+// same distances, more slowly.
 std::vector<double> nearest_other_distances(const PointList& points, const std::vector<std::uint32_t>& queries,
                                             parallel::ThreadPool* pool = nullptr, const Bounds* bounds = nullptr);
 

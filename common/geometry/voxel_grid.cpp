@@ -221,6 +221,9 @@ PointList voxel_grid_downsample(const PointList& points, double voxel_size,
 
 namespace {
 
+// Bits a point the occupancy arrays may take in all: 8 bytes (a map takes 24 or more).
+constexpr double kMaxBitsPerPoint = 64.0;
+
 // The occupied voxels of points[0], points[stride], ... (n of them) as bits of a dense array of
 // `dims` cells, voxel c at cell c + margin on each axis, and how many are set. A large cloud's
 // points in one part per thread, each setting the bits of its own array, joined into the first:
@@ -229,7 +232,13 @@ std::optional<std::pair<std::vector<std::uint64_t>, std::uint64_t>> occupancy_bi
     const PointList& points, std::size_t n, std::size_t stride, const VoxelOf& voxel_of,
     const std::array<std::uint64_t, 3>& dims, std::uint64_t margin, parallel::ThreadPool* pool) {
   const std::uint64_t cells = dims[0] * dims[1] * dims[2];
-  const std::size_t threads = pool != nullptr && n >= kBoundsBlock ? pool->size() : 1;
+  // An array per part, as many parts as fit kMaxBitsPerPoint bits a point in all (one at least).
+  const double affordable = kMaxBitsPerPoint * static_cast<double>(n) /
+                            static_cast<double>(std::max<std::uint64_t>(1, cells));
+  const std::size_t threads =
+      pool != nullptr && n >= kBoundsBlock
+          ? std::clamp<std::size_t>(static_cast<std::size_t>(affordable), 1, pool->size())
+          : 1;
   const std::size_t per_part = (n + threads - 1) / threads;
   const std::size_t parts = (n + per_part - 1) / per_part;  // for_blocks' count: at most `threads`
   std::vector<std::vector<std::uint64_t>> bits(parts);
@@ -283,8 +292,8 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   // The same keys and the same validity as voxel_grid_downsample's.
   if (!grid_fits(b, inv)) return n;
   const VoxelOf voxel_of{b.min, inv};
-  // A bit per voxel while that is at most 8 bytes a point (a map takes 24 or more).
-  const auto dims = dense_dims(b, inv, 0, 64.0 * static_cast<double>(n));
+  // A bit per voxel while that is at most kMaxBitsPerPoint a point.
+  const auto dims = dense_dims(b, inv, 0, kMaxBitsPerPoint * static_cast<double>(n));
   if (dims[0] > 0) {
     if (const auto bits = occupancy_bits(points, n, stride, voxel_of, dims, 0, pool))
       return bits->second;
@@ -303,21 +312,20 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
   return occupied;
 }
 
-std::size_t downsampled_size(const PointList& points, double voxel_size,
-                             int min_occupied_neighbours, const Bounds* bounds,
-                             parallel::ThreadPool* pool) {
+std::optional<std::size_t> downsampled_size(const PointList& points, double voxel_size,
+                                            int min_occupied_neighbours, const Bounds* bounds,
+                                            parallel::ThreadPool* pool) {
   if (!(voxel_size > 0.0) || points.empty()) return points.size();
   const Bounds b = bounds ? *bounds : bounding_box(points, 1, pool);
   const double inv = 1.0 / voxel_size;
   if (!grid_fits(b, inv)) return points.size();
   // A bit per voxel with one of margin either side (the neighbours need no bounds test), while
-  // that is at most 8 bytes a point; else the grid itself.
-  const auto dims = dense_dims(b, inv, 1, 64.0 * static_cast<double>(points.size()));
+  // that is at most kMaxBitsPerPoint a point.
+  const auto dims = dense_dims(b, inv, 1, kMaxBitsPerPoint * static_cast<double>(points.size()));
   const auto bits =
       dims[0] > 0 ? occupancy_bits(points, points.size(), 1, VoxelOf{b.min, inv}, dims, 1, pool)
                   : std::nullopt;
-  if (!bits)
-    return voxel_grid_downsample(points, voxel_size, min_occupied_neighbours, nullptr, &b).size();
+  if (!bits) return std::nullopt;
   const auto& [words, occupied] = *bits;
   if (min_occupied_neighbours <= 0) return occupied;
   // voxel_grid_downsample's isolated voxels: fewer occupied among their 26 neighbours.

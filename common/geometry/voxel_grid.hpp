@@ -2,6 +2,8 @@
 // resolution (mean distance to the nearest neighbour, thesis 3.4).
 #pragma once
 
+#include <optional>
+
 #include "geometry/point_cloud.hpp"
 #include "parallel/thread_pool.hpp"
 
@@ -36,11 +38,13 @@ std::size_t count_occupied_voxels(const PointList& points, double voxel_size, co
                                   std::size_t stride = 1, parallel::ThreadPool* pool = nullptr);
 
 // voxel_grid_downsample(points, voxel_size, min_occupied_neighbours).size() (isolated voxels left
-// out as there) without building the points: for a search of the voxel size over the whole cloud.
-// `bounds` and `pool` as above.
-std::size_t downsampled_size(const PointList& points, double voxel_size,
-                             int min_occupied_neighbours, const Bounds* bounds = nullptr,
-                             parallel::ThreadPool* pool = nullptr);
+// out as there) without building the points, for a search of the voxel size over the whole cloud;
+// nothing where a bit per voxel would take more than 8 bytes a point, or a point lies outside
+// `bounds` (then only the grid tells). `bounds` and `pool` as above.
+std::optional<std::size_t> downsampled_size(const PointList& points, double voxel_size,
+                                            int min_occupied_neighbours,
+                                            const Bounds* bounds = nullptr,
+                                            parallel::ThreadPool* pool = nullptr);
 
 // Mean distance from a point to its nearest other point, estimated on at most
 // `max_samples` points spread evenly through the cloud. 0 for fewer than 2 points.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 #include "geometry/kdtree.hpp"
 #include "geometry/pca.hpp"
@@ -76,33 +77,41 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
     }
   }
   // Then the whole cloud: while its grid holds more than a fifth over the budget, a coarser
-  // voxel (three times at most). A subsample of one point in kCountFirstStride or sparser
+  // voxel (kCoarsenings times at most). A subsample of one point in kCountFirstStride or sparser
   // occupies too few voxels (a million points: 11 900 against the whole cloud's 16 400), so its
-  // first grid would be thrown away: there the sizes are counted (no points built, the points'
-  // parts on the pool) and the cloud gridded once, at the voxel the grids would have ended at.
+  // first grid would be thrown away: there a grid's size is counted where that can be (no points
+  // built, the points' parts on the pool), and the cloud gridded at the voxel the grids would
+  // have ended at; the same voxel and points as gridding each time.
+  constexpr int kCoarsenings = 3;
   constexpr std::size_t kCountFirstStride = 8;
-  const auto coarser = [&](std::size_t size) {
-    return (voxel > 0.0 ? voxel : diagonal / 1000.0) *
+  const auto coarser = [&](double from, std::size_t size) {
+    return (from > 0.0 ? from : diagonal / 1000.0) *
            std::sqrt(static_cast<double>(size) / static_cast<double>(budget)) * 1.02;
   };
   std::size_t isolated = 0;
-  PointList pts;
-  if (stride >= kCountFirstStride) {
-    std::size_t size = geometry::downsampled_size(raw, voxel, min_neighbours, &bounds, pool);
-    for (int attempt = 0; attempt < 3 && size > budget + budget / 5; ++attempt) {
-      voxel = coarser(size);
-      if (attempt + 1 < 3)
-        size = geometry::downsampled_size(raw, voxel, min_neighbours, &bounds, pool);
+  std::optional<PointList> gridded;  // the grid at `voxel`, when it had to be built to be counted
+  const auto size_at = [&](double v) {
+    gridded.reset();
+    if (stride >= kCountFirstStride) {
+      if (const auto counted = geometry::downsampled_size(raw, v, min_neighbours, &bounds, pool))
+        return *counted;
     }
-    pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
-  } else {
-    pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
-    for (int attempt = 0; attempt < 3 && cfg.max_points > 0 && pts.size() > budget + budget / 5;
-         ++attempt) {
-      voxel = coarser(pts.size());
-      pts = geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
+    gridded = geometry::voxel_grid_downsample(raw, v, min_neighbours, &isolated, &bounds);
+    return gridded->size();
+  };
+  std::size_t size = size_at(voxel);
+  for (int attempt = 0; attempt < kCoarsenings && cfg.max_points > 0 && size > budget + budget / 5;
+       ++attempt) {
+    voxel = coarser(voxel, size);
+    if (attempt + 1 < kCoarsenings) {
+      size = size_at(voxel);
+    } else {
+      gridded.reset();  // the last voxel tried is kept whatever its size: gridded below
     }
   }
+  PointList pts =
+      gridded ? std::move(*gridded)
+              : geometry::voxel_grid_downsample(raw, voxel, min_neighbours, &isolated, &bounds);
   out.voxel_size = voxel;
   out.outliers_removed = isolated;
   if (cfg.statistical_outliers) {
