@@ -160,5 +160,35 @@ TEST(MinimalEnclosingSphere, FarAndHugeCoordinates) {
   }
 }
 
+// Points a hair inside, on and outside the loops' threshold, in many directions, far from the
+// origin and near it: the scan settles by squared distance only what the exact test would settle
+// the same way, and hands it the rest (a band narrower than the squares' rounding fails here).
+TEST(MinimalEnclosingSphere, TheScanAnswersAsTheExactTestAtTheThreshold) {
+  std::mt19937_64 rng(21);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Sphere s{Point(u(rng), u(rng), u(rng)),
+                   std::abs(u(rng)) * (trial % 2 ? 1e-6 : 1.0) + 1e-9};
+    const double threshold = s.radius * (1.0 + 1e-10) + 1e-12;
+    PointList pts;
+    for (int k = 0; k < 64; ++k) {
+      const Eigen::Vector3d direction = Point(g(rng), g(rng), g(rng)).normalized();
+      for (const double r :
+           {std::nextafter(threshold, 0.0), threshold, std::nextafter(threshold, 1e300)})
+        pts.push_back(s.center + r * direction);
+    }
+    std::vector<std::size_t> got, want;
+    for (std::size_t i = detail::first_outside(s, pts, 0, pts.size()); i < pts.size();
+         i = detail::first_outside(s, pts, i + 1, pts.size()))
+      got.push_back(i);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (detail::outside(s, pts[i])) want.push_back(i);
+    }
+    ASSERT_EQ(got, want) << "trial " << trial;
+    ASSERT_FALSE(want.empty());
+  }
+}
+
 }  // namespace
 }  // namespace cloudshape::geometry
