@@ -111,6 +111,18 @@ struct VoxelSum {
   std::uint64_t key = 0;
 };
 
+// Whether fewer than `min_occupied` of a voxel's 26 neighbours are occupied, `occupied(dx, dy, dz)`
+// telling for each offset; the search stops once that many are found.
+template <class Occupied>
+bool lonely_voxel(int min_occupied, const Occupied& occupied) {
+  int found = 0;
+  for (int dx = -1; dx <= 1 && found < min_occupied; ++dx)
+    for (int dy = -1; dy <= 1 && found < min_occupied; ++dy)
+      for (int dz = -1; dz <= 1 && found < min_occupied; ++dz)
+        if ((dx || dy || dz) && occupied(dx, dy, dz)) ++found;
+  return found < min_occupied;
+}
+
 // The voxels of `points` in the order their first point comes, each with its sum, count and
 // key; `lonely` marks those with fewer than `min_occupied_neighbours` occupied among their 26
 // neighbours (only whether that many are reached matters: the search stops there). The hash map.
@@ -135,14 +147,10 @@ std::vector<VoxelSum> sum_voxels_in_map(const PointList& points, const VoxelOf& 
   if (min_occupied_neighbours <= 0) return acc;
   for (std::size_t v = 0; v < acc.size(); ++v) {
     const auto [ix, iy, iz] = detail::cell_coords(acc[v].key);
-    int occupied = 0;
-    for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
-      for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
-        for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
-          if ((dx || dy || dz) &&
-              slot.find(detail::cell_key(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent)
-            ++occupied;
-    lonely[v] = occupied < min_occupied_neighbours;
+    lonely[v] = lonely_voxel(
+        min_occupied_neighbours, [&, ix = ix, iy = iy, iz = iz](int dx, int dy, int dz) {
+          return slot.find(detail::cell_key(ix + dx, iy + dy, iz + dz)) != detail::CellMap::kAbsent;
+        });
   }
   return acc;
 }
@@ -176,14 +184,10 @@ std::optional<std::vector<VoxelSum>> sum_voxels_in_array(const PointList& points
   const std::int64_t step[3] = {static_cast<std::int64_t>(ny * nz), static_cast<std::int64_t>(nz), 1};
   for (std::size_t v = 0; v < acc.size(); ++v) {
     const std::int64_t cell = static_cast<std::int64_t>(acc[v].key);
-    int occupied = 0;
-    for (int dx = -1; dx <= 1 && occupied < min_occupied_neighbours; ++dx)
-      for (int dy = -1; dy <= 1 && occupied < min_occupied_neighbours; ++dy)
-        for (int dz = -1; dz <= 1 && occupied < min_occupied_neighbours; ++dz)
-          if ((dx || dy || dz) &&
-              slot[static_cast<std::size_t>(cell + dx * step[0] + dy * step[1] + dz * step[2])] != detail::CellMap::kAbsent)
-            ++occupied;
-    lonely[v] = occupied < min_occupied_neighbours;
+    lonely[v] = lonely_voxel(min_occupied_neighbours, [&](int dx, int dy, int dz) {
+      return slot[static_cast<std::size_t>(cell + dx * step[0] + dy * step[1] + dz * step[2])] !=
+             detail::CellMap::kAbsent;
+    });
   }
   return acc;
 }
@@ -339,13 +343,10 @@ std::optional<std::size_t> downsampled_size(const PointList& points, double voxe
     for (std::uint64_t rest = words[w]; rest != 0; rest &= rest - 1) {
       const auto cell =
           static_cast<std::int64_t>(w * 64 + static_cast<std::size_t>(__builtin_ctzll(rest)));
-      int neighbours = 0;
-      for (int dx = -1; dx <= 1 && neighbours < min_occupied_neighbours; ++dx)
-        for (int dy = -1; dy <= 1 && neighbours < min_occupied_neighbours; ++dy)
-          for (int dz = -1; dz <= 1 && neighbours < min_occupied_neighbours; ++dz)
-            if ((dx || dy || dz) && occupied_at(cell + dx * step[0] + dy * step[1] + dz * step[2]))
-              ++neighbours;
-      lonely += neighbours < min_occupied_neighbours ? 1 : 0;
+      const auto occupied_by = [&](int dx, int dy, int dz) {
+        return occupied_at(cell + dx * step[0] + dy * step[1] + dz * step[2]) != 0;
+      };
+      if (lonely_voxel(min_occupied_neighbours, occupied_by)) ++lonely;
     }
   }
   // As there: many isolated voxels mean a grid finer than the sampling, and none is dropped.

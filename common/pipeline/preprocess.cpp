@@ -65,6 +65,11 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   // scales with its edge squared, hence the square root. The size is first searched on
   // a sparse subsample (it can only occupy fewer voxels than the whole cloud), so the
   // whole cloud is usually gridded once.
+  // The voxel that would hold about the budget, from `from` at which the points take `size`.
+  const auto coarser = [&](double from, std::size_t size) {
+    return (from > 0.0 ? from : diagonal / 1000.0) *
+           std::sqrt(static_cast<double>(size) / static_cast<double>(budget)) * 1.02;
+  };
   std::size_t stride = 1;
   if (cfg.max_points > 0 && raw.size() > budget) {
     stride = std::max<std::size_t>(1, raw.size() / (budget * 4));
@@ -72,8 +77,7 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
     for (int attempt = 0; attempt < 4; ++attempt) {
       const std::size_t n = geometry::count_occupied_voxels(raw, voxel, &sparse_bounds, stride, pool);
       if (n <= budget) break;
-      voxel = (voxel > 0.0 ? voxel : diagonal / 1000.0) *
-              std::sqrt(static_cast<double>(n) / static_cast<double>(budget)) * 1.02;
+      voxel = coarser(voxel, n);
     }
   }
   // Then the whole cloud: while its grid holds more than a fifth over the budget, a coarser
@@ -84,10 +88,6 @@ PreprocessedCloud preprocess_cloud(const PointList& raw, const config::Preproces
   // have ended at; the same voxel and points as gridding each time.
   constexpr int kCoarsenings = 3;
   constexpr std::size_t kCountFirstStride = 8;
-  const auto coarser = [&](double from, std::size_t size) {
-    return (from > 0.0 ? from : diagonal / 1000.0) *
-           std::sqrt(static_cast<double>(size) / static_cast<double>(budget)) * 1.02;
-  };
   std::size_t isolated = 0;
   std::optional<PointList> gridded;  // the grid at `voxel`, when it had to be built to be counted
   const auto size_at = [&](double v) {
