@@ -38,7 +38,7 @@ done
 
 # The unit tests the sanitizer run builds and runs (no process-level DDS tests, no benchmarks:
 # they would double the CI's build for little more coverage of our own code).
-sanitize_tests=(geometry_tests pipeline_tests config_tests report_test recognition_tests
+sanitize_tests=(geometry_tests pipeline_tests parallel_tests config_tests report_test recognition_tests
                 io_pcd_reader_test io_pcd_errors_test io_ply_reader_test io_xyz_reader_test
                 io_cloud_reader_test io_cloud_writers_test io_labelled_pcd_writer_test io_mesh_reader_test io_robustness_test
                 io_real_data_test io_mcap_reader_test io_mcap_errors_test io_mcap_clouds_test recording_test

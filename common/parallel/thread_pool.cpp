@@ -30,28 +30,29 @@ void ThreadPool::run_blocks(std::size_t blocks, const std::function<void(std::si
     job_ = &f;
     blocks_ = blocks;
     next_.store(0);
-    busy_workers_ = workers_.size();
     error_ = nullptr;
     ++generation_;
   }
   wake_.notify_all();
-  take_blocks();
+  take_blocks(f, blocks);
   std::exception_ptr error;
   {
-    // Every worker leaves this generation before f (the caller's) goes out of scope.
+    // The job is withdrawn before the wait: a worker that wakes only now (a VM's wake-up can
+    // take longer than all the blocks) finds nothing and is not waited for; the caller waits
+    // only for those that joined, and they leave before f (the caller's) goes out of scope.
     std::unique_lock<std::mutex> lock(state_mutex_);
-    finished_.wait(lock, [this] { return busy_workers_ == 0; });
     job_ = nullptr;
+    finished_.wait(lock, [this] { return joined_workers_ == 0; });
     error = error_;
     error_ = nullptr;
   }
   if (error) std::rethrow_exception(error);
 }
 
-void ThreadPool::take_blocks() {
-  for (std::size_t b = next_.fetch_add(1); b < blocks_; b = next_.fetch_add(1)) {
+void ThreadPool::take_blocks(const std::function<void(std::size_t)>& f, std::size_t blocks) {
+  for (std::size_t b = next_.fetch_add(1); b < blocks; b = next_.fetch_add(1)) {
     try {
-      (*job_)(b);
+      f(b);
     } catch (...) {
       std::lock_guard<std::mutex> lock(state_mutex_);
       if (!error_) error_ = std::current_exception();
@@ -62,15 +63,21 @@ void ThreadPool::take_blocks() {
 void ThreadPool::worker_loop() {
   std::size_t seen = 0;
   for (;;) {
+    const std::function<void(std::size_t)>* job = nullptr;
+    std::size_t blocks = 0;
     {
       std::unique_lock<std::mutex> lock(state_mutex_);
       wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
       if (stop_) return;
       seen = generation_;
+      if (job_ == nullptr) continue;  // its caller ran every block already
+      job = job_;
+      blocks = blocks_;
+      ++joined_workers_;
     }
-    take_blocks();
+    take_blocks(*job, blocks);
     std::lock_guard<std::mutex> lock(state_mutex_);
-    if (--busy_workers_ == 0) finished_.notify_one();
+    if (--joined_workers_ == 0) finished_.notify_one();
   }
 }
 

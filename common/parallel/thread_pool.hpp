@@ -33,7 +33,7 @@ class ThreadPool {
 
  private:
   void worker_loop();
-  void take_blocks();
+  void take_blocks(const std::function<void(std::size_t)>& f, std::size_t blocks);
 
   std::vector<std::thread> workers_;
   std::mutex run_mutex_;    // held by the run_blocks that owns the workers
@@ -43,7 +43,7 @@ class ThreadPool {
   const std::function<void(std::size_t)>* job_ = nullptr;
   std::size_t blocks_ = 0;
   std::atomic<std::size_t> next_{0};
-  std::size_t busy_workers_ = 0;
+  std::size_t joined_workers_ = 0;  // workers inside take_blocks for the current job
   std::size_t generation_ = 0;
   bool stop_ = false;
   std::exception_ptr error_;

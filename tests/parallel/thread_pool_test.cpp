@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <functional>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <vector>
@@ -27,6 +29,30 @@ TEST(ThreadPool, EveryBlockRunsOnceForAnyThreadCount) {
       pool.run_blocks(runs.size(), [&](std::size_t b) { ++runs[b]; });
       EXPECT_EQ(std::count(runs.begin(), runs.end(), 1), 997) << threads << " threads, round " << round;
     }
+  }
+}
+
+// Runs so short that the caller often finishes every block before a worker wakes: the caller
+// returns without waiting for that worker, which must then neither run a block of a job whose
+// function is gone (each run's is a new object) nor miss the next run.
+TEST(ThreadPool, BackToBackTinyRunsRunEachBlockOnceAndNoneLate) {
+  for (std::size_t threads : {2u, 4u}) {
+    ThreadPool pool(threads);
+    std::vector<std::atomic<int>> late(1);
+    for (int round = 0; round < 20000; ++round) {
+      auto runs = std::make_unique<std::vector<std::atomic<int>>>(3);
+      std::atomic<bool> returned{false};
+      const std::function<void(std::size_t)> job = [&runs, &returned, &late](std::size_t b) {
+        if (returned) ++late[0];
+        ++(*runs)[b];
+      };
+      pool.run_blocks(runs->size(), job);
+      returned = true;
+      for (std::size_t b = 0; b < runs->size(); ++b)
+        ASSERT_EQ((*runs)[b].load(), 1)
+            << threads << " threads, round " << round << ", block " << b;
+    }
+    EXPECT_EQ(late[0].load(), 0) << threads << " threads";
   }
 }
 
