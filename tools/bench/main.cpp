@@ -7,10 +7,13 @@
 //                    (how right it is: see accuracy.hpp)
 //   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
 //                    (labelled real or synthetic scenes: see scene_bench.hpp)
+//   cloudshape-bench --pool [--threads N] [--json]
+//                    (what a parallel run costs on the thread pool: see pool_bench.hpp)
 //
 // For every (shape, size) one synthetic solid is drawn (speed_shapes.hpp: the six by
-// synth::random_solid, a prism and a frustum as meshes; fixed seed) and its surface sampled -- outside the timed region -- then recognize_cloud runs W untimed
-// warm-up times and R timed times. Reported per stage: median and p10-p90 (plus min/max in
+// synth::random_solid, a prism and a frustum as meshes; fixed seed) and its surface sampled --
+// outside the timed region -- then recognize_cloud runs W untimed warm-up times and R timed times.
+// Reported per stage: median and p10-p90 (plus min/max in
 // --json) of the StageTimings the pipeline returns, and of the wall clock around the whole
 // call as a cross-check of `total`. Progress goes to stderr; the table or JSON to stdout.
 #include <CLI/CLI.hpp>
@@ -32,6 +35,7 @@
 #include "parallel/retained_memory.hpp"
 #include "parallel/thread_pool.hpp"
 #include "pipeline/recognize.hpp"
+#include "pool_bench.hpp"
 #include "scene_bench.hpp"
 #include "speed_shapes.hpp"
 #include "synth/ground_truth.hpp"
@@ -176,6 +180,12 @@ int main(int argc, char** argv) {
                  "--scenes: expected shapes per scene (default: the mOSD learn truth for the "
                  "scenes it lists; <scene>.truth.json sidecars override)");
   app.add_flag("--per-scene", scenes.per_scene, "--scenes: one line per scene on stderr");
+  bool pool_bench = false;
+  app.add_flag("--pool", pool_bench,
+               "time the thread pool's runs (blocks of 0 to a few hundred us) against the same "
+               "blocks in order")
+      ->excludes("--accuracy")
+      ->excludes("--scenes");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -246,6 +256,12 @@ int main(int argc, char** argv) {
     options.config_label = config_path.empty() ? "built-in defaults" : config_path;
     options.pool = &pool;
     return cs::bench::run_accuracy(options, cfg);
+  }
+  if (pool_bench) {
+    cs::bench::PoolBenchOptions options;
+    options.pool = &pool;
+    options.json = json;
+    return cs::bench::run_pool_bench(options);
   }
   if (!scenes.dir.empty()) {
     scenes.default_truth = CLOUDSHAPE_SCENE_TRUTH;
