@@ -10,18 +10,15 @@
 namespace cloudshape {
 namespace {
 
-using Json = nlohmann::json;
-using testing::run_process;
-
 const std::string kBin = CLOUDSHAPE_BENCH_BIN;
 
 TEST(BenchPool, RowsGrowWithTheBlocksWorkAndRunOneBlockAThread) {
-  const auto run = run_process({kBin, "--pool", "--threads", "2", "--json"});
+  const auto run = testing::run_process({kBin, "--pool", "--threads", "2", "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  const Json out = Json::parse(run.out);
+  const nlohmann::json out = nlohmann::json::parse(run.out);
   EXPECT_EQ(out.at("threads"), 2);
   EXPECT_EQ(out.at("blocks"), 2);
-  const Json& rows = out.at("rows");
+  const nlohmann::json& rows = out.at("rows");
   ASSERT_EQ(rows.size(), 5u) << out.dump();
   // Each row has ten times the steps of the one before (four times for the last): its block
   // takes longer by far more than any timing noise.
@@ -37,7 +34,7 @@ TEST(BenchPool, RunsAloneNotWithTheScenesOrTheAccuracy) {
   for (const char* other : {"--accuracy", "--scenes"}) {
     std::vector<std::string> argv{kBin, "--pool", other};
     if (std::string(other) == "--scenes") argv.push_back("/tmp");
-    const auto run = run_process(argv);
+    const auto run = testing::run_process(argv);
     EXPECT_NE(run.exit_code, 0) << other;
     EXPECT_NE(run.err.find("excludes"), std::string::npos) << other << ": " << run.err;
   }
