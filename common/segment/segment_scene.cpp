@@ -245,18 +245,25 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   const geometry::Bounds box = geometry::bounding_box(points, 1, pool);
   const auto [scene, coarse] =
       budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool, &box);
-  if (may_be_isolated && coarse > scene) {
+  // A cloud too sparse for the isolated budget to coarsen it (a 10 000-point solid) is tried on the
+  // scene's own graph, which the scene's path then reuses: a lone solid skips the structure search
+  // and the finer remainder graph there too.
+  std::optional<NeighbourGraph> scene_graph;
+  if (may_be_isolated) {
     NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool, &box);
     std::vector<char> none(trial.size(), 0);
     bool reaches = false;
     remove_structure(trial, cfg, none, pool, false, &reaches);
+    if (!(coarse > scene)) scene_graph = trial;
     if (!reaches) {
       SceneSegmentation out = segment_graph(std::move(trial), true, points, grid, cfg, pool, view);
+      out.lone_solid = true;
       if (isolated_whole(out, points.size(), cfg)) return out;
     }
   }
-  return segment_graph(build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box), false,
-                       points, grid, cfg, pool, view);
+  if (!scene_graph)
+    scene_graph = build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box);
+  return segment_graph(std::move(*scene_graph), false, points, grid, cfg, pool, view);
 }
 
 }  // namespace

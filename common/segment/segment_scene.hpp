@@ -21,6 +21,7 @@ struct SceneSegmentation {
   std::vector<StructurePlane> structure;  // tables, floors, walls removed
   std::optional<Point> viewpoint;         // the sensor's position, when the layout tells it
   std::size_t graph_nodes = 0;            // nodes of the first graph of the cloud (in a lidar frame a finer one may follow)
+  bool lone_solid = false;  // segmented as one solid with no support in view (the isolated trial)
 };
 
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
@@ -35,9 +36,10 @@ struct SceneSegmentation {
 // on fewer than cfg.scan_object_min_beams beams, or with cfg.scan_leftover_share of its points in a
 // structure plane's band, is a strip of ground or wall, dropped. An unorganized cloud with no
 // support in view (no plane reaching cfg.structure_reach times beyond what stands on it) that comes
-// out at cfg.isolated_target_nodes as one object leaving out fewer than cfg.min_object_nodes
-// points is segmented there: a lone solid needs no finer graph; any other is segmented at the
-// scene's budget, as without that trial. A `pool` builds
+// out at cfg.isolated_target_nodes (or at the scene's own voxel, where that budget coarsens
+// nothing) as one object leaving out fewer than cfg.min_object_nodes points is segmented there: a
+// lone solid needs no finer graph nor a structure search; any other is segmented at the scene's
+// budget, as without that trial. A `pool` builds
 // the graph's normals on its threads: the same segments.
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool = nullptr);

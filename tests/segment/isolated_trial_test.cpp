@@ -47,10 +47,40 @@ TEST(SegmentIsolatedTrial, ADenseLoneSolidIsSegmentedOnTheCoarserGraph) {
   EXPECT_EQ(s.objects.front().size(), box.size());
   const double target = static_cast<double>(cfg.isolated_target_nodes);
   EXPECT_NEAR(static_cast<double>(s.graph_nodes), target, 0.3 * target);
+  EXPECT_TRUE(s.lone_solid);
   const SceneSegmentation as_scene = segment_scene(box, GridLayout{}, without_trial());
   EXPECT_GT(as_scene.graph_nodes, 3 * s.graph_nodes);
   ASSERT_EQ(as_scene.objects.size(), 1u);
   EXPECT_EQ(as_scene.objects.front().size(), box.size());
+}
+
+// A sparse lone box (10 000 points: the isolated budget coarsens nothing) is tried on the scene's
+// own graph: one object of all its points, the same graph and objects as without the trial, but
+// known for a lone solid (no structure search, no finer remainder graph). On a table it is a scene.
+TEST(SegmentIsolatedTrial, ASparseLoneSolidIsTriedOnTheScenesOwnGraph) {
+  std::mt19937_64 rng(7);
+  const PointList box = box_surface({0.4, 0.3, 0.2}, {0.1, -0.2, 0.5}, 10000, rng);
+  const config::SegmentConfig cfg;
+  const auto [scene, coarse] = budget_voxels(box, cfg, cfg.isolated_target_nodes);
+  ASSERT_EQ(coarse, scene);  // too sparse for a coarser trial graph
+  const SceneSegmentation s = segment_scene(box, GridLayout{}, cfg);
+  EXPECT_TRUE(s.lone_solid);
+  ASSERT_EQ(s.objects.size(), 1u);
+  EXPECT_EQ(s.objects.front().size(), box.size());
+  const SceneSegmentation as_scene = segment_scene(box, GridLayout{}, without_trial());
+  EXPECT_FALSE(as_scene.lone_solid);
+  EXPECT_EQ(as_scene.graph_nodes, s.graph_nodes);
+  EXPECT_EQ(as_scene.objects, s.objects);
+
+  PointList on_table = box_surface({0.4, 0.3, 0.2}, {0.0, 0.0, 0.0}, 6000, rng);
+  std::uniform_real_distribution<double> u(-0.6, 1.0);
+  for (int i = 0; i < 6000; ++i) on_table.emplace_back(u(rng), u(rng), 0.0);
+  const auto [table_scene, table_coarse] = budget_voxels(on_table, cfg, cfg.isolated_target_nodes);
+  ASSERT_EQ(table_coarse, table_scene);
+  const SceneSegmentation table = segment_scene(on_table, GridLayout{}, cfg);
+  EXPECT_FALSE(table.lone_solid);
+  EXPECT_FALSE(table.structure.empty());
+  EXPECT_EQ(table.objects, segment_scene(on_table, GridLayout{}, without_trial()).objects);
 }
 
 // A dense box on a table: the coarser graph holds a plane reaching far beyond what stands on it,
