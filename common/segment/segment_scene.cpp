@@ -254,11 +254,15 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
     std::vector<char> none(trial.size(), 0);
     bool reaches = false;
     remove_structure(trial, cfg, none, pool, false, &reaches);
-    if (!(coarse > scene)) scene_graph = trial;
+    const bool scenes_own = !(coarse > scene);
     if (!reaches) {
+      // Kept for the scene's path in case the trial's objects are not one whole solid.
+      if (scenes_own) scene_graph = trial;
       SceneSegmentation out = segment_graph(std::move(trial), true, points, grid, cfg, pool, view);
       out.lone_solid = true;
       if (isolated_whole(out, points.size(), cfg)) return out;
+    } else if (scenes_own) {
+      scene_graph = std::move(trial);
     }
   }
   if (!scene_graph)
