@@ -65,11 +65,12 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
 // (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
 // An unorganized cloud without a lidar's viewpoint (`may_be_isolated`) is gridded to
-// cfg.isolated_target_nodes first when that is coarser than the scene's budget, and segmented
-// there when that graph holds no plane reaching cfg.structure_reach times beyond what stands on it
-// and the segmentation gives one object of all the points but a few (isolated_whole): a lone solid
-// needs no finer graph. Otherwise (a support in view, several objects, a part left out) it is a
-// scene, segmented again at cfg.voxel_target_nodes: what it would have been without the trial.
+// cfg.isolated_target_nodes first (a cloud too sparse for that to coarsen it: at the scene's
+// budget, the graph the scene's path then reuses), and segmented there when that graph holds no
+// plane reaching cfg.structure_reach times beyond what stands on it and the segmentation gives one
+// object of all the points but a few (isolated_whole): a lone solid needs no finer graph. Otherwise
+// (a support in view, several objects, a part left out) it is a scene, segmented again at
+// cfg.voxel_target_nodes: what it would have been without the trial.
 SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
                                bool may_be_isolated);
@@ -246,8 +247,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   const auto [scene, coarse] =
       budget_voxels(points, cfg, may_be_isolated ? cfg.isolated_target_nodes : 0, pool, &box);
   // A cloud too sparse for the isolated budget to coarsen it (a 10 000-point solid) is tried on the
-  // scene's own graph, which the scene's path then reuses: a lone solid skips the structure search
-  // and the finer remainder graph there too.
+  // scene's own graph, which the scene's path then reuses: a lone solid skips the scene path's
+  // structure removal and finer remainder graph there too.
   std::optional<NeighbourGraph> scene_graph;
   if (may_be_isolated) {
     NeighbourGraph trial = build_voxel_graph(points, coarse, cfg.target_nodes, cfg, pool, &box);

@@ -38,7 +38,7 @@ struct SceneSegmentation {
 // support in view (no plane reaching cfg.structure_reach times beyond what stands on it) that comes
 // out at cfg.isolated_target_nodes (or at the scene's own voxel, where that budget coarsens
 // nothing) as one object leaving out fewer than cfg.min_object_nodes points is segmented there: a
-// lone solid needs no finer graph nor a structure search; any other is segmented at the scene's
+// lone solid needs no finer graph; any other is segmented at the scene's
 // budget, as without that trial. A `pool` builds
 // the graph's normals on its threads: the same segments.
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,

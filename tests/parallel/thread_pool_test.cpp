@@ -38,12 +38,12 @@ TEST(ThreadPool, EveryBlockRunsOnceForAnyThreadCount) {
 TEST(ThreadPool, BackToBackTinyRunsRunEachBlockOnceAndNoneLate) {
   for (std::size_t threads : {2u, 4u}) {
     ThreadPool pool(threads);
-    std::vector<std::atomic<int>> late(1);
+    std::atomic<int> late{0};
     for (int round = 0; round < 20000; ++round) {
       auto runs = std::make_unique<std::vector<std::atomic<int>>>(3);
       std::atomic<bool> returned{false};
       const std::function<void(std::size_t)> job = [&runs, &returned, &late](std::size_t b) {
-        if (returned) ++late[0];
+        if (returned) ++late;
         ++(*runs)[b];
       };
       pool.run_blocks(runs->size(), job);
@@ -52,7 +52,7 @@ TEST(ThreadPool, BackToBackTinyRunsRunEachBlockOnceAndNoneLate) {
         ASSERT_EQ((*runs)[b].load(), 1)
             << threads << " threads, round " << round << ", block " << b;
     }
-    EXPECT_EQ(late[0].load(), 0) << threads << " threads";
+    EXPECT_EQ(late.load(), 0) << threads << " threads";
   }
 }
 

@@ -56,7 +56,8 @@ TEST(SegmentIsolatedTrial, ADenseLoneSolidIsSegmentedOnTheCoarserGraph) {
 
 // A sparse lone box (10 000 points: the isolated budget coarsens nothing) is tried on the scene's
 // own graph: one object of all its points, the same graph and objects as without the trial, but
-// known for a lone solid (no structure search, no finer remainder graph). On a table it is a scene.
+// known for a lone solid (no structure removal, no finer remainder graph). On a table it is a
+// scene.
 TEST(SegmentIsolatedTrial, ASparseLoneSolidIsTriedOnTheScenesOwnGraph) {
   std::mt19937_64 rng(7);
   const PointList box = box_surface({0.4, 0.3, 0.2}, {0.1, -0.2, 0.5}, 10000, rng);

@@ -13,9 +13,9 @@
 // For every (shape, size) one synthetic solid is drawn (speed_shapes.hpp: the six by
 // synth::random_solid, a prism and a frustum as meshes; fixed seed) and its surface sampled --
 // outside the timed region -- then recognize_cloud runs W untimed warm-up times and R timed times.
-// Reported per stage: median and p10-p90 (plus min/max in
-// --json) of the StageTimings the pipeline returns, and of the wall clock around the whole
-// call as a cross-check of `total`. Progress goes to stderr; the table or JSON to stdout.
+// Reported per stage: median and p10-p90 (plus min/max in --json) of the StageTimings the
+// pipeline returns, and of the wall clock around the whole call as a cross-check of `total`.
+// Progress goes to stderr; the table or JSON to stdout.
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
@@ -181,9 +181,10 @@ int main(int argc, char** argv) {
                  "scenes it lists; <scene>.truth.json sidecars override)");
   app.add_flag("--per-scene", scenes.per_scene, "--scenes: one line per scene on stderr");
   bool pool_bench = false;
-  app.add_flag("--pool", pool_bench,
-               "time the thread pool's runs (blocks of 0 to a few hundred us) against the same "
-               "blocks in order")
+  app.add_flag(
+         "--pool", pool_bench,
+         "time the thread pool's runs (blocks of none to about a millisecond) against the same "
+         "blocks in order")
       ->excludes("--accuracy")
       ->excludes("--scenes");
   try {

@@ -1,5 +1,5 @@
 // cloudshape-bench --pool: what a parallel run costs on the thread pool, against the same blocks
-// run in order on the caller, for blocks from none to a few hundred microseconds of work.
+// run in order on the caller, for blocks from none to about a millisecond of work.
 #pragma once
 
 #include "parallel/thread_pool.hpp"
