@@ -141,10 +141,11 @@ bool equal_sides_and_turns(const geometry::Polygon2& p, double tolerance, double
   return true;
 }
 
-bool is_rectangle(const geometry::Polygon2& p, double degrees) {
-  if (p.size() != 4) return false;
+// `degrees`: per corner i (between the sides ending and starting there) how far from 90 it may be.
+bool is_rectangle(const geometry::Polygon2& p, const std::vector<double>& degrees) {
+  if (p.size() != 4 || degrees.size() != 4) return false;
   for (std::size_t i = 0; i < 4; ++i)
-    if (std::abs(turn_degrees(p, i) - 90.0) > degrees) return false;
+    if (std::abs(turn_degrees(p, i) - 90.0) > degrees[i]) return false;
   return true;
 }
 
@@ -350,12 +351,19 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
     if (static_cast<double>(outside) > in.cfg.prism_notch_outside_share * static_cast<double>(in.cloud.size()))
       return std::nullopt;
   }
-  if (is_rectangle(polygon, in.cfg.parallel_degrees)) return std::nullopt;
-  // A regular pentagon is the pentagonal prism's. Sides only a cap's border shows are placed less
-  // exactly (as in merge_collinear): with one of them, regular within prism_guessed_slack times the
-  // tolerances is.
+  // A rectangle is the box's, a regular pentagon the pentagonal prism's. Sides only a cap's border
+  // shows are placed less exactly (as in merge_collinear): a corner on one of them is a right angle
+  // within prism_guessed_slack times parallel_degrees (a real box's short side seen only as its
+  // cap's ragged border is 10-12 degrees off), one between two seen faces within parallel_degrees
+  // (a rhombus seen on two sides keeps its measured corner); with a guessed side a pentagon regular
+  // within the slack times the tolerances is regular.
   const bool guessed = std::any_of(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; });
   const double slack = guessed ? in.cfg.prism_guessed_slack : 1.0;
+  std::vector<double> right_angle_tolerance(ring.size(), in.cfg.parallel_degrees);
+  for (std::size_t i = 0; i < ring.size(); ++i)
+    if (!ring[i].seen || !ring[(i + 1) % ring.size()].seen)
+      right_angle_tolerance[i] *= in.cfg.prism_guessed_slack;
+  if (is_rectangle(polygon, right_angle_tolerance)) return std::nullopt;
   if (polygon.size() == 5 &&
       equal_sides_and_turns(polygon, slack * in.cfg.regular_tolerance, slack * in.cfg.parallel_degrees))
     return std::nullopt;

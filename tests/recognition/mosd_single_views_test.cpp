@@ -11,6 +11,7 @@
 
 #include "config/pipeline_config.hpp"
 #include "io/cloud_reader.hpp"
+#include "mosd_frames.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
@@ -20,17 +21,9 @@
 namespace cloudshape {
 namespace {
 
-const std::filesystem::path kDir = std::filesystem::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real/mosd_learn";
-
-// CI must have the data; a developer's checkout without shared/ skips.
-bool data_missing() {
-  if (std::filesystem::exists(kDir / "learn0.pcd")) return false;
-  const char* ci = std::getenv("CI");
-  if (ci && std::string(ci) == "true") ADD_FAILURE() << kDir << " missing on CI";
-  return true;
-}
-
-std::string frame_path(int frame) { return (kDir / ("learn" + std::to_string(frame) + ".pcd")).string(); }
+using mosd::data_missing;
+using mosd::frame_path;
+using mosd::kDir;
 
 // SOURCES.md: label / 10 is the object (labels >= 20); groups under 50 points are ignored.
 std::map<int, PointList> ground_truth_objects(const io::CloudFile& file) {

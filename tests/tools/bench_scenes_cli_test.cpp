@@ -128,6 +128,29 @@ TEST_F(BenchScenes, ScenesRunInNaturalOrder) {
   EXPECT_EQ(order, (std::vector<std::string>{"s1.pcd", "s2.pcd", "s10.pcd"}));
 }
 
+// --jitter: each scene scored --jitter-runs times as its own run (file~1, file~2), the box moved by
+// a twentieth of its 5 mm spacing still found every time, and the settings in the JSON.
+TEST_F(BenchScenes, JitterScoresEachSceneOncePerRun) {
+  const fs::path d = sub("jitter");
+  write_labelled_pcd(d / "box_on_table.pcd", box_on_table());
+  std::ofstream(d / "box_on_table.truth.json") << R"({"groups": {"20": "box"}})";
+  const auto run = run_process(
+      {kBin, "--scenes", d.string(), "--json", "--jitter", "0.05", "--jitter-runs", "2"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  ASSERT_EQ(out.at("scenes").size(), 2u);
+  EXPECT_EQ(out.at("scenes").at(0).at("file"), "box_on_table.pcd~1");
+  EXPECT_EQ(out.at("scenes").at(1).at("file"), "box_on_table.pcd~2");
+  EXPECT_DOUBLE_EQ(out.at("settings").at("jitter").get<double>(), 0.05);
+  EXPECT_EQ(out.at("settings").at("jitter_runs"), 2);
+  const Json& all = out.at("rows").back();
+  EXPECT_EQ(all.at("objects"), 2);
+  EXPECT_EQ(all.at("right"), 2);
+  const auto negative = run_process({kBin, "--scenes", d.string(), "--jitter", "-1"});
+  EXPECT_NE(negative.exit_code, 0);
+  EXPECT_NE(negative.err.find("--jitter"), std::string::npos) << negative.err;
+}
+
 TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   const fs::path learn = testing::shared_data_path("real/mosd_learn");
   CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");

@@ -6,6 +6,7 @@
 //                    [--seed S] [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
 //   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
+//                    [--jitter SHARE [--jitter-runs R]]
 //                    (labelled real or synthetic scenes: see scene_bench.hpp)
 //   cloudshape-bench --pool [--threads N] [--json]
 //                    (what a parallel run costs on the thread pool: see pool_bench.hpp)
@@ -180,6 +181,16 @@ int main(int argc, char** argv) {
                  "--scenes: expected shapes per scene (default: the mOSD learn truth for the "
                  "scenes it lists; <scene>.truth.json sidecars override)");
   app.add_flag("--per-scene", scenes.per_scene, "--scenes: one line per scene on stderr");
+  app.add_option(
+         "--jitter", scenes.jitter,
+         "--scenes: score each scene --jitter-runs times, its points moved by Gaussian noise of "
+         "this "
+         "share of its point spacing (e.g. 0.05): far below a sensor's noise, answers that change "
+         "are on a decision's edge")
+      ->check(CLI::Range(0.0, 10.0));
+  app.add_option("--jitter-runs", scenes.jitter_runs, "--scenes --jitter: runs per scene")
+      ->default_val(3)
+      ->check(CLI::Range(1, 100));
   bool pool_bench = false;
   app.add_flag(
          "--pool", pool_bench,

@@ -11,7 +11,9 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <random>
 
+#include "geometry/voxel_grid.hpp"
 #include "io/cloud_reader.hpp"
 #include "pipeline/recognize.hpp"
 #include "scene_report.hpp"
@@ -106,15 +108,29 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg, parallel::ThreadPool* pool) {
+// Every coordinate moved by Gaussian noise of `share` of the cloud's point spacing.
+void jitter_points(PointList& points, double share, std::uint64_t seed) {
+  const double sigma = share * geometry::mean_nearest_neighbour_distance(points);
+  if (!(sigma > 0.0)) return;
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  for (Point& p : points) p += Point(noise(rng), noise(rng), noise(rng));
+}
+
+// `jitter`: the share of the point spacing the scene's points are moved by (0: as read), with
+// `seed`; `run_label` names the run in the per-scene lines.
+SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg,
+                   parallel::ThreadPool* pool, double jitter = 0.0, std::uint64_t seed = 0,
+                   const std::string& run_label = "") {
   const fs::path& path = scene.path;
   const SceneTruth& truth = scene.truth;
-  const io::CloudFile cloud = read_scene(path);
+  io::CloudFile cloud = read_scene(path);
   if (cloud.labels.empty())
     throw InputError{path.string() +
                      ": no label field, but the truth lists it as a labelled scene"};
+  if (jitter > 0.0) jitter_points(cloud.points, jitter, seed);
   SceneRun run;
-  run.file = path.filename().string();
+  run.file = path.filename().string() + run_label;
   run.category = truth.category;
   run.truth = scene.truth_source;
   run.points = cloud.points.size();
@@ -186,7 +202,14 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
-    runs.push_back(run_scene(scenes[k], cfg, options.pool));
+    if (!(options.jitter > 0.0)) {
+      runs.push_back(run_scene(scenes[k], cfg, options.pool));
+      continue;
+    }
+    for (int r = 0; r < options.jitter_runs; ++r)
+      runs.push_back(run_scene(scenes[k], cfg, options.pool, options.jitter,
+                               1000003ull * k + static_cast<std::uint64_t>(r),
+                               "~" + std::to_string(r + 1)));
   }
   if (progress) std::fprintf(stderr, "\r%70s\r", "");
   const double seconds =
@@ -203,12 +226,19 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     settings["config"] = options.config_label;
     settings["min_group_points"] = kMinGroupPoints;
     settings["seconds"] = seconds;
+    settings["jitter"] = options.jitter;
+    settings["jitter_runs"] = options.jitter > 0.0 ? options.jitter_runs : 1;
     std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
   } else {
     print_scene_table(rows, stdout);
     std::printf("\n%zu scene%s of %s in %.1f s; truth: %s\n", runs.size(),
                 runs.size() == 1 ? "" : "s", options.dir.c_str(), seconds,
                 truth_sources(scenes, truth_file).c_str());
+    if (options.jitter > 0.0)
+      std::printf(
+          "each scene %d times, its points moved by Gaussian noise of %g of its point spacing "
+          "(runs ~1-~%d)\n",
+          options.jitter_runs, options.jitter, options.jitter_runs);
   }
   return 0;
 }

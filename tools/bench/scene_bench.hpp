@@ -19,6 +19,13 @@ struct SceneOptions {
   bool per_scene = false;    // one line per scene on stderr
   std::string config_label;  // what --json reports as the configuration used
   parallel::ThreadPool* pool = nullptr;  // --threads: recognize_cloud's threads (same answers)
+  // --jitter: each scene is scored `jitter_runs` times, every coordinate moved by Gaussian noise
+  // of this share of the scene's point spacing (seeded per scene and run), instead of once as
+  // read. Far below a sensor's own noise, such a move changes nothing a scene shows: answers that
+  // change with it sit on a decision's edge, and an unseen frame of the same kind lands either
+  // side.
+  double jitter = 0.0;
+  int jitter_runs = 3;
 };
 
 // Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,
