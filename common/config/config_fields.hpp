@@ -152,6 +152,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
+  f("guessed_side_cost", c.guessed_side_cost);
   f("closer_fit_margin", c.closer_fit_margin);
   f("polyhedron_face_share", c.polyhedron_face_share);
   f("min_side_span", c.min_side_span);

@@ -410,6 +410,8 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   out.axes.row(1) = u.transpose();
   out.axes.row(2) = v.transpose();
   out.polygon = polygon;
+  out.guessed_sides = static_cast<int>(
+      std::count_if(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; }));
   // A non-convex outline's centroid may lie outside it (an L's): the interior point, from which
   // every direction meets the surface, is then the middle of the polygon's first ear.
   if (geometry::signed_distance(polygon, Eigen::Vector2d::Zero()) > 0.0) {

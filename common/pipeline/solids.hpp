@@ -37,6 +37,9 @@ struct FittedSolid {
   std::vector<Point> vertices;
   bool regular = false;
   std::vector<Eigen::Vector2d> polygon;
+  // A prism's sides that no face shows, placed on its cap's border alone: free lines fitted to
+  // that border, each of which buys the solid a share of the points (solve.guessed_side_cost).
+  int guessed_sides = 0;
   // Signed distance of a point to the solid's surface (negative inside); exact on the
   // surface, a lower bound away from it, which is all verification needs.
   std::function<double(const Point&)> signed_distance;

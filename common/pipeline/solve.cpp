@@ -264,9 +264,15 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     solid_of[i] = fit_solid(candidates[i], input);
     admit(i, solid_of[i]);
   }
+  // What a solid explains, less what its free lines bought: a prism side no face shows is fitted
+  // to its cap's border alone, and a real box's ragged or rounded border gives such a prism a few
+  // points more than the box's faces do (cfg.guessed_side_cost each).
+  const auto score = [&](const std::pair<FittedSolid, Verification>& f) {
+    return f.second.explained - cfg.guessed_side_cost * static_cast<double>(f.first.guessed_sides);
+  };
   for (auto& f : fit_of) {
     if (!f) continue;
-    best = std::max(best, f->second.explained);
+    best = std::max(best, score(*f));
     fitted.push_back(std::move(*f));
   }
   // Among the solids explaining nearly the most points, the closest fit wins: on a sparse
@@ -277,7 +283,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const std::pair<FittedSolid, Verification>* chosen = nullptr;
   for (bool frustum_too : {false, true}) {
     for (const auto& f : fitted) {
-      if (f.second.explained < best - cfg.preferred_margin) continue;
+      if (score(f) < best - cfg.preferred_margin) continue;
       if (f.first.shape == Shape::frustum && !frustum_too) continue;
       if (!chosen || f.second.rms < chosen->second.rms * (1.0 - cfg.closer_fit_margin)) chosen = &f;
     }
