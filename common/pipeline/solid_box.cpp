@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <tuple>
 
 #include "geometry/pca.hpp"
@@ -43,16 +44,43 @@ std::vector<Eigen::Vector3d> face_directions(const Eigen::Matrix3d& frame) {
   return directions;
 }
 
+// The extent of the points along `axis`.
+double extent_along(const PointList& cloud, const Eigen::Vector3d& axis) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Point& p : cloud) {
+    lo = std::min(lo, p.dot(axis));
+    hi = std::max(hi, p.dot(axis));
+  }
+  return hi - lo;
+}
+
 // A box's faces are rectangles: a face holding a fair share of the face points whose outline
 // fills less of its smallest enclosing rectangle (a triangle fills half) is a prism's cap, a
 // tetrahedron's or a pyramid's face. The outline is the convex hull, so the holes and ragged
-// fill of a real sensor's partial face do not count; only a cut corner does, and mildly.
-bool faces_are_rectangles(const SolveInput& in, const std::vector<const DetectedPlane*>& faces) {
+// fill of a real sensor's partial face do not count; only a cut corner does, and mildly. A face
+// is judged with every face along the same box direction (`directions`, within acos(cos_parallel))
+// lying within the step depth of it (solve.box_step_depth of the extent, at least inlier_distance):
+// RANSAC cuts a real box's bulging face into pieces a few millimetres apart, and a piece cut
+// across the face is no rectangle of its own; face_is_step takes such pieces for one face too.
+bool faces_are_rectangles(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
+                          const std::vector<Eigen::Vector3d>& directions, double cos_parallel) {
   std::size_t all = 0;
   for (const DetectedPlane* f : faces) all += f->inliers.size();
   for (const DetectedPlane* f : faces) {
     if (static_cast<double>(f->inliers.size()) < in.cfg.box_outline_min_share * static_cast<double>(all)) continue;
-    const FaceOutline o = face_outline(in.cloud, *f, 0.0, 0.0, 1.0);
+    DetectedPlane face = *f;
+    for (const Eigen::Vector3d& d : directions) {
+      if (f->plane.normal.dot(d) < cos_parallel) continue;
+      const double depth = std::max(in.cfg.box_step_depth * extent_along(in.cloud, d),
+                                    in.cfg.inlier_distance * in.resolution);
+      const double at = detail::face_position(in.cloud, *f, d);
+      for (const DetectedPlane* g : faces)
+        if (g != f && g->plane.normal.dot(d) >= cos_parallel &&
+            std::abs(detail::face_position(in.cloud, *g, d) - at) <= depth)
+          face.inliers.insert(face.inliers.end(), g->inliers.begin(), g->inliers.end());
+      break;
+    }
+    const FaceOutline o = face_outline(in.cloud, face, 0.0, 0.0, 1.0);
     if (o.rect_fill > 0.0 && o.rect_fill < in.cfg.box_face_rect_fill) return false;
   }
   return true;
@@ -95,7 +123,7 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
   if (detail::stray_face_share(faces, face_directions(frame), std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) >
       in.cfg.stray_face_share)
     return std::nullopt;
-  if (!faces_are_rectangles(in, faces)) return std::nullopt;
+  if (!faces_are_rectangles(in, faces, face_directions(frame), cos_parallel)) return std::nullopt;
   if (detail::slanted_neighbour_face(in, faces, face_directions(frame), std::cos(in.cfg.stray_face_degrees * kPi / 180.0)) ||
       detail::face_is_step(in, faces, face_directions(frame), cos_parallel))
     return std::nullopt;

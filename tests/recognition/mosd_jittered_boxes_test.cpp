@@ -3,6 +3,8 @@
 // faces.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <random>
 #include <string>
 
@@ -37,6 +39,49 @@ TEST(MosdJitteredBoxes, NoBoxIsAPrism) {
         EXPECT_NE(o.shape, "prism") << "learn" << frame << ", seed " << seed;
     }
   }
+}
+
+// The box frames learn0-16 under the three jitters `cloudshape-bench --scenes --jitter 0.05` gives
+// them (seed 1000003 * frame + run): every labelled box (a report most of whose points are its) is
+// named a box in at least 110 of the 114 runs (measured 112; the bench's boxes row). RANSAC cuts a
+// bulging face into pieces a few millimetres apart, and a piece cut across the face failed the
+// box's rectangle test alone: 108 before the pieces were judged as one face.
+TEST(MosdJitteredBoxes, BoxesOfTheBoxFramesAreBoxes) {
+  if (mosd::data_missing()) GTEST_SKIP() << mosd::kDir << " not present";
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  int boxes = 0, runs = 0;
+  for (int frame = 0; frame <= 16; ++frame) {
+    const io::CloudFile file = io::read_cloud(mosd::frame_path(frame));
+    const double sigma = 0.05 * geometry::mean_nearest_neighbour_distance(file.points);
+    std::map<std::uint32_t, std::size_t> group_points;  // SOURCES.md: label / 10 is the object
+    for (std::uint32_t label : file.labels)
+      if (label >= 20) ++group_points[label / 10];
+    for (std::uint64_t run = 0; run < 3; ++run) {
+      PointList points = file.points;
+      std::mt19937_64 rng(1000003ull * static_cast<std::uint64_t>(frame) + run);
+      std::normal_distribution<double> noise(0.0, sigma);
+      for (Point& p : points) p += Point(noise(rng), noise(rng), noise(rng));
+      const auto result =
+          pipeline::recognize_cloud(points, file.grid, cfg, "learn" + std::to_string(frame));
+      std::map<std::uint32_t, std::string> named;
+      for (const auto& o : result.objects) {
+        std::map<std::uint32_t, std::size_t> votes;
+        for (std::uint32_t i : o.point_indices) ++votes[file.labels[i] / 10];
+        const auto top =
+            std::max_element(votes.begin(), votes.end(),
+                             [](const auto& a, const auto& b) { return a.second < b.second; });
+        if (top != votes.end() && top->first >= 2 && 2 * top->second > o.point_indices.size())
+          named[top->first] = o.shape;
+      }
+      for (const auto& [group, points_in_group] : group_points) {
+        if (points_in_group < 50) continue;
+        ++runs;
+        boxes += named[group] == "box";
+      }
+    }
+  }
+  EXPECT_EQ(runs, 114);
+  EXPECT_GE(boxes, 110) << "of " << runs;
 }
 
 }  // namespace
