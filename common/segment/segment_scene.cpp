@@ -70,10 +70,12 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
 // plane reaching cfg.structure_reach times beyond what stands on it and the segmentation gives one
 // object of all the points but a few (isolated_whole): a lone solid needs no finer graph. Otherwise
 // (a support in view, several objects, a part left out) it is a scene, segmented again at
-// cfg.voxel_target_nodes: what it would have been without the trial.
-SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
-                               bool may_be_isolated);
+// cfg.voxel_target_nodes: what it would have been without the trial. `own_resolution`: the points
+// are one lidar segment gridded alone (segment_graph).
+SceneSegmentation segment_part(const PointList& points, const GridLayout& grid,
+                               const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
+                               std::optional<std::optional<Point>> scan, bool may_be_isolated,
+                               bool own_resolution = false);
 
 // The objects in the points `indices` select, segmented again alone, when they would grid finer
 // alone than at `spacing` (finer_on_its_own); none otherwise. Only a strict part of `points`: all
@@ -86,7 +88,8 @@ std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
   own.reserve(indices.size());
   for (std::uint32_t i : indices) own.push_back(points[i]);
   if (!finer_on_its_own(own, spacing, cfg, pool)) return std::nullopt;
-  std::vector<std::vector<std::uint32_t>> parts = segment_part(own, GridLayout{}, cfg, pool, scan, false).objects;
+  std::vector<std::vector<std::uint32_t>> parts =
+      segment_part(own, GridLayout{}, cfg, pool, scan, false, true).objects;
   for (auto& part : parts) {
     for (std::uint32_t& i : part) i = indices[i];
   }
@@ -103,10 +106,14 @@ bool isolated_whole(const SceneSegmentation& s, std::size_t points, const config
 
 // The objects of `g`, a graph of `points` (`scan`: the lidar's viewpoint, if any). `isolated`: the
 // trial's graph, on which the structure search found nothing to remove, and which already holds
-// the cloud at its own resolution.
-SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList& points, const GridLayout& grid,
-                                const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
-                                const std::optional<Point>& scan) {
+// the cloud at its own resolution. `own_resolution`: `points` are one segment of a lidar frame
+// gridded alone (at_own_resolution), as finely as their sampling allows, so that a node may hold a
+// few points; a part there is an object when it holds cfg.min_object_nodes points, the count that
+// sent the segment there.
+SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList& points,
+                                const GridLayout& grid, const config::SegmentConfig& cfg,
+                                parallel::ThreadPool* pool, const std::optional<Point>& scan,
+                                bool own_resolution = false) {
   SceneSegmentation out;
   if (g.size() == 0) return out;
   out.graph_nodes = g.size();
@@ -171,7 +178,10 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
     // In a lidar frame a segment too small at the scene's resolution is tried at its own first: a
     // ball among ground and walls may be a few dozen of the scene's coarse voxels and hundreds of
     // points. One with fewer points than cfg.min_object_nodes makes no object at any resolution.
-    const bool few_nodes = static_cast<double>(members[s].size()) < min_nodes;
+    const bool few_nodes =
+        own_resolution && !segment_points.empty()
+            ? static_cast<std::int64_t>(segment_points[s].size()) < cfg.min_object_nodes
+            : static_cast<double>(members[s].size()) < min_nodes;
     if (few_nodes && (segment_points.empty() ||
                       static_cast<std::int64_t>(segment_points[s].size()) < cfg.min_object_nodes)) {
       continue;
@@ -233,9 +243,10 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
   return out;
 }
 
-SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
-                               parallel::ThreadPool* pool, std::optional<std::optional<Point>> scan,
-                               bool may_be_isolated) {
+SceneSegmentation segment_part(const PointList& points, const GridLayout& grid,
+                               const config::SegmentConfig& cfg, parallel::ThreadPool* pool,
+                               std::optional<std::optional<Point>> scan, bool may_be_isolated,
+                               bool own_resolution) {
   if (!grid.organized() && !scan) scan = scan_origin(points, cfg, pool);
   const std::optional<Point> view = scan ? *scan : std::nullopt;
   if (grid.organized() && grid.pixel.size() == points.size()) {
@@ -268,7 +279,8 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid, 
   }
   if (!scene_graph)
     scene_graph = build_voxel_graph(points, scene, cfg.target_nodes, cfg, pool, &box);
-  return segment_graph(std::move(*scene_graph), false, points, grid, cfg, pool, view);
+  return segment_graph(std::move(*scene_graph), false, points, grid, cfg, pool, view,
+                       own_resolution);
 }
 
 }  // namespace

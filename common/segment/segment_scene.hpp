@@ -32,7 +32,8 @@ struct SceneSegmentation {
 // are structure too; in an unorganized cloud what the structure leaves is gridded anew when that
 // is much finer (finer_remainder_graph), and in a lidar frame a segment whose own points would grid
 // much finer is segmented again alone (finer_on_its_own), one under the node minimum too if it
-// holds that many points: each object at its own resolution; there an object
+// holds that many points, and a part of it there is an object when it holds that many points (a
+// voxel there may hold several): each object at its own resolution; there an object
 // on fewer than cfg.scan_object_min_beams beams, or with cfg.scan_leftover_share of its points in a
 // structure plane's band, is a strip of ground or wall, dropped. An unorganized cloud with no
 // support in view (no plane reaching cfg.structure_reach times beyond what stands on it) that comes

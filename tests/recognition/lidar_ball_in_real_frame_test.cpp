@@ -125,5 +125,40 @@ TEST(LidarBallInRealFrame, ASmallBallAmongTheRealGroundAndWallsIsFound) {
   }
 }
 
+// Balls 4.5-5.3 m off on three beams, 69-97 returns (tools/lidar_moved_ball.py --seed 7: balls 3,
+// 11, 15, 27): a few dozen points of a coarse voxel, their segment is segmented again alone, where
+// a voxel holds two or three returns: the ball's part there is an object when it holds
+// cfg.segment.min_object_nodes points. At least 3 of the 4 found (measured 4; 1 here and none of
+// the tool's four when the part needed that many nodes).
+TEST(LidarBallInRealFrame, AFarBallOnThreeBeamsIsFound) {
+  const auto path = testing::shared_data_path("real/spherecalib/example3_L1_S1_lidar_sphere.xyz");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(path);
+  const PointList real = io::read_cloud(path.string()).points;
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  const Ball balls[] = {{{-3.5545, 2.7323, -0.0160}, 0.2532},
+                        {{3.7880, 3.6139, -0.1497}, 0.3042},
+                        {{-0.7595, 4.6094, -0.1144}, 0.3211},
+                        {{5.3022, 0.4049, -0.0356}, 0.2573}};
+  std::uint64_t seed = 11;
+  int found = 0;
+  for (const Ball& ball : balls) {
+    const auto result =
+        pipeline::recognize_cloud(frame_with(real, ball, seed++), cfg, "moved ball");
+    const auto nearest = std::min_element(
+        result.objects.begin(), result.objects.end(), [&](const auto& a, const auto& b) {
+          return (a.center - ball.centre).norm() < (b.center - ball.centre).norm();
+        });
+    if (nearest == result.objects.end() || nearest->shape != "sphere" ||
+        nearest->dimensions.empty())
+      continue;
+    const auto near = std::count_if(
+        result.objects.begin(), result.objects.end(),
+        [&](const auto& o) { return (o.center - ball.centre).norm() < 3.0 * ball.radius; });
+    found += std::abs(nearest->dimensions.front().second - ball.radius) <= 0.05 * ball.radius &&
+             (nearest->center - ball.centre).norm() <= 0.05 && near == 1;
+  }
+  EXPECT_GE(found, 3);
+}
+
 }  // namespace
 }  // namespace cloudshape
