@@ -4,7 +4,6 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <string>
 
 #include "config/pipeline_config.hpp"
@@ -33,26 +32,9 @@ TEST(MosdRoundedCoordinates, BoxesStayBoxes) {
     for (Point& p : file.points) p = Point(six_digits(p.x()), six_digits(p.y()), six_digits(p.z()));
     const auto result =
         pipeline::recognize_cloud(file.points, file.grid, cfg, "learn" + std::to_string(frame));
-    // SOURCES.md: label / 10 is the object (labels >= 20); groups under 50 points are ignored.
-    std::map<std::uint32_t, std::size_t> group_points;
-    for (std::uint32_t label : file.labels)
-      if (label >= 20) ++group_points[label / 10];
-    std::map<std::uint32_t, std::string>
-        named;  // per object, the shape of the report most of whose points are its
-    for (const auto& o : result.objects) {
-      EXPECT_NE(o.shape, "prism") << "learn" << frame;
-      std::map<std::uint32_t, std::size_t> votes;
-      for (std::uint32_t i : o.point_indices) ++votes[file.labels[i] / 10];
-      std::uint32_t group = 0;
-      std::size_t most = 0;
-      for (const auto& [g, n] : votes)
-        if (n > most) group = g, most = n;
-      if (group >= 2 && 2 * most > o.point_indices.size()) named[group] = o.shape;
-    }
-    for (const auto& [group, points] : group_points) {
-      if (points < 50) continue;
-      EXPECT_EQ(named[group], "box") << "learn" << frame << " object " << group;
-    }
+    for (const auto& o : result.objects) EXPECT_NE(o.shape, "prism") << "learn" << frame;
+    for (const auto& [object, shape] : mosd::shapes_of_objects(file, result))
+      EXPECT_EQ(shape, "box") << "learn" << frame << " object " << object;
   }
 }
 

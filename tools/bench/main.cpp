@@ -184,9 +184,8 @@ int main(int argc, char** argv) {
   app.add_option(
          "--jitter", scenes.jitter,
          "--scenes: score each scene --jitter-runs times, its points moved by Gaussian noise of "
-         "this "
-         "share of its point spacing (e.g. 0.05): far below a sensor's noise, answers that change "
-         "are on a decision's edge")
+         "this share of its point spacing (e.g. 0.05): far below a sensor's noise, answers that "
+         "change are on a decision's edge")
       ->check(CLI::Range(0.0, 10.0));
   app.add_option("--jitter-runs", scenes.jitter_runs, "--scenes --jitter: runs per scene")
       ->default_val(3)
