@@ -44,22 +44,12 @@ std::vector<Eigen::Vector3d> face_directions(const Eigen::Matrix3d& frame) {
   return directions;
 }
 
-// The extent of the points along `axis`.
-double extent_along(const PointList& cloud, const Eigen::Vector3d& axis) {
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (const Point& p : cloud) {
-    lo = std::min(lo, p.dot(axis));
-    hi = std::max(hi, p.dot(axis));
-  }
-  return hi - lo;
-}
-
 // A box's faces are rectangles: a face holding a fair share of the face points whose outline
 // fills less of its smallest enclosing rectangle (a triangle fills half) is a prism's cap, a
 // tetrahedron's or a pyramid's face. The outline is the convex hull, so the holes and ragged
 // fill of a real sensor's partial face do not count; only a cut corner does, and mildly. A face
 // is judged with every face along the same box direction (`directions`, within acos(cos_parallel))
-// lying within the step depth of it (solve.box_step_depth of the extent, at least inlier_distance):
+// lying within the step depth of it (detail::step_depth):
 // RANSAC cuts a real box's bulging face into pieces a few millimetres apart, and a piece cut
 // across the face is no rectangle of its own; face_is_step takes such pieces for one face too.
 bool faces_are_rectangles(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
@@ -71,8 +61,7 @@ bool faces_are_rectangles(const SolveInput& in, const std::vector<const Detected
     DetectedPlane face = *f;
     for (const Eigen::Vector3d& d : directions) {
       if (f->plane.normal.dot(d) < cos_parallel) continue;
-      const double depth = std::max(in.cfg.box_step_depth * extent_along(in.cloud, d),
-                                    in.cfg.inlier_distance * in.resolution);
+      const double depth = detail::step_depth(in, d);
       const double at = detail::face_position(in.cloud, *f, d);
       for (const DetectedPlane* g : faces)
         if (g != f && g->plane.normal.dot(d) >= cos_parallel &&

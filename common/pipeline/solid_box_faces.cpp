@@ -85,6 +85,15 @@ bool slanted_neighbour_face(const SolveInput& in, const std::vector<const Detect
   return false;
 }
 
+double step_depth(const SolveInput& in, const Eigen::Vector3d& axis) {
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const Point& p : in.cloud) {
+    lo = std::min(lo, p.dot(axis));
+    hi = std::max(hi, p.dot(axis));
+  }
+  return std::max(in.cfg.box_step_depth * (hi - lo), in.cfg.inlier_distance * in.resolution);
+}
+
 bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                   const std::vector<Eigen::Vector3d>& directions, double cos_along) {
   if (faces.empty()) return false;
@@ -94,13 +103,7 @@ bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>&
   for (const DetectedPlane* f : faces) {
     if (static_cast<double>(f->inliers.size()) < min_points || !along_any(f->plane.normal, directions, cos_along))
       continue;
-    const Eigen::Vector3d n = f->plane.normal;
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (const Point& p : in.cloud) {
-      lo = std::min(lo, p.dot(n));
-      hi = std::max(hi, p.dot(n));
-    }
-    const double depth = std::max(in.cfg.box_step_depth * (hi - lo), in.cfg.inlier_distance * in.resolution);
+    const double depth = step_depth(in, f->plane.normal);
     // Face points beyond the plane on either side: a bounding face has them all on one.
     std::size_t above = 0, below = 0;
     for (const DetectedPlane* g : faces)

@@ -357,8 +357,9 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // cap's ragged border is 10-12 degrees off), one between two seen faces within parallel_degrees
   // (a rhombus seen on two sides keeps its measured corner); with a guessed side a pentagon regular
   // within the slack times the tolerances is regular.
-  const bool guessed = std::any_of(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; });
-  const double slack = guessed ? in.cfg.prism_guessed_slack : 1.0;
+  const auto guessed_sides = static_cast<int>(
+      std::count_if(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; }));
+  const double slack = guessed_sides > 0 ? in.cfg.prism_guessed_slack : 1.0;
   std::vector<double> right_angle_tolerance(ring.size(), in.cfg.parallel_degrees);
   for (std::size_t i = 0; i < ring.size(); ++i)
     if (!ring[i].seen || !ring[(i + 1) % ring.size()].seen)
@@ -410,8 +411,7 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   out.axes.row(1) = u.transpose();
   out.axes.row(2) = v.transpose();
   out.polygon = polygon;
-  out.guessed_sides = static_cast<int>(
-      std::count_if(ring.begin(), ring.end(), [](const SideRun& r) { return !r.seen; }));
+  out.guessed_sides = guessed_sides;
   // A non-convex outline's centroid may lie outside it (an L's): the interior point, from which
   // every direction meets the surface, is then the middle of the polygon's first ear.
   if (geometry::signed_distance(polygon, Eigen::Vector2d::Zero()) > 0.0) {

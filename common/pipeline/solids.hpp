@@ -179,9 +179,14 @@ double stray_face_share(const std::vector<const DetectedPlane*>& faces,
 bool slanted_neighbour_face(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                             const std::vector<Eigen::Vector3d>& directions, double cos_along);
 
+// How far from a box face's plane, along `axis`, a point lies beyond it: solve.box_step_depth of
+// the points' extent along `axis`, at least inlier_distance resolutions (face_is_step's depth;
+// faces_are_rectangles joins pieces of one face within it).
+double step_depth(const SolveInput& in, const Eigen::Vector3d& axis);
+
 // A face along one of `directions` (within acos(cos_along)) holding solve.box_step_min_share of
 // the faces' points with more than solve.box_step_share of them on each side of its plane,
-// farther than solve.box_step_depth of the points' extent along its normal: the inner face of an
+// farther than step_depth along its normal: the inner face of an
 // L or T, no face of a convex solid.
 bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                   const std::vector<Eigen::Vector3d>& directions, double cos_along);

@@ -16,6 +16,7 @@
 #include "geometry/voxel_grid.hpp"
 #include "io/cloud_file.hpp"
 #include "pipeline/result.hpp"
+#include "synth/perturb.hpp"
 
 namespace cloudshape::mosd {
 
@@ -39,8 +40,7 @@ inline PointList jittered(PointList points, double share, std::uint64_t seed) {
   const double sigma = share * geometry::mean_nearest_neighbour_distance(points);
   if (!(sigma > 0.0)) return points;
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, sigma);
-  for (Point& p : points) p += Point(noise(rng), noise(rng), noise(rng));
+  synth::add_gaussian_noise(points, sigma, rng);
   return points;
 }
 

@@ -17,6 +17,7 @@
 #include "io/cloud_reader.hpp"
 #include "pipeline/recognize.hpp"
 #include "scene_report.hpp"
+#include "synth/perturb.hpp"
 
 namespace cloudshape::bench {
 
@@ -113,8 +114,7 @@ void jitter_points(PointList& points, double share, std::uint64_t seed) {
   const double sigma = share * geometry::mean_nearest_neighbour_distance(points);
   if (!(sigma > 0.0)) return;
   std::mt19937_64 rng(seed);
-  std::normal_distribution<double> noise(0.0, sigma);
-  for (Point& p : points) p += Point(noise(rng), noise(rng), noise(rng));
+  synth::add_gaussian_noise(points, sigma, rng);
 }
 
 // `jitter`: the share of the point spacing the scene's points are moved by (0: as read), with
