@@ -157,6 +157,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("polyhedron_face_share", c.polyhedron_face_share);
   f("min_side_span", c.min_side_span);
   f("extent_hull_samples", c.extent_hull_samples);
+  f("solid_min_scan_lines", c.solid_min_scan_lines);
+  f("scan_noise_ratio", c.scan_noise_ratio);
   f("apex_gap", c.apex_gap);
   f("cone_tip_gap", c.cone_tip_gap);
   f("frustum_min_taper", c.frustum_min_taper);

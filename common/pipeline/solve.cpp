@@ -14,14 +14,11 @@
 #include "geometry/oriented_box.hpp"
 #include "geometry/polygon.hpp"
 #include "pipeline/container.hpp"
+#include "pipeline/scan_fit.hpp"
 #include "pipeline/solids.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
-
-// Scan lines an object must lie on for any solid but a sphere: two lines are two curves, which fix
-// a sphere (two circles of it) but leave any other solid's extent between and beyond them open.
-constexpr std::uint32_t kScanLinesBeyondASphere = 3;
 
 struct Verification {
   double explained = 0.0;  // share of points within the tolerance of the surface
@@ -205,7 +202,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   // On two scan lines only a sphere is determined; one line (segment.scan_object_min_beams
   // below 2) fixes no solid at all.
-  const bool sphere_only = scan_lines > 0 && scan_lines < kScanLinesBeyondASphere;
+  const bool sphere_only =
+      scan_lines > 0 && static_cast<std::int64_t>(scan_lines) < cfg.solid_min_scan_lines;
   const auto lines = [scan_lines] {
     return "seen on " + std::to_string(scan_lines) + " scan line" + (scan_lines == 1 ? "" : "s");
   };
@@ -345,6 +343,26 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     out.reason = sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf);
     out.extent = extent_of(cloud, {}, cfg, pool);
     return out;
+  }
+  // A lidar object's solid must lie within the points' own noise of them: on a few scan lines a
+  // wrong solid still passes within inlier_distance of most points (the spacing along a ring sets
+  // the resolution, the ranging noise does not shrink with it), but it leaves them scattered by
+  // several times the noise each ring shows along itself, where the right one does not.
+  if (scan_lines > 0 && viewpoint && cfg.scan_noise_ratio > 0.0) {
+    const double noise = scan_line_noise(cloud, *viewpoint);
+    const double scatter = scatter_about(cloud, chosen->first);
+    // A noise-free ring's neighbours are collinear on a flat face: below this share of the point
+    // spacing a scatter is the fit's own arithmetic.
+    constexpr double kScatterFloorSpacings = 0.01;
+    if (scatter > std::max(cfg.scan_noise_ratio * noise, kScatterFloorSpacings * resolution)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    ": the best solid (%s) leaves the points %.1f times their noise from it",
+                    shape_name(chosen->first.shape).c_str(), noise > 0.0 ? scatter / noise : 0.0);
+      out.reason = lines() + buf;
+      out.extent = extent_of(cloud, {}, cfg, pool);
+      return out;
+    }
   }
   const FittedSolid& s = chosen->first;
   out.shape = shape_name(s.shape);

@@ -214,9 +214,13 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
 
 // The frame's other segments are strips of ground rings and walls the structure left, or sparse
 // clutter: those on fewer beams than a solid needs (segment.scan_object_min_beams) or mostly within
-// a structure plane's band (segment.scan_leftover_share) are dropped, so few named solids remain
-// beside the sphere (measured: 12, 8 before a small segment's part at its own resolution counted
-// its points, not its nodes; bound 14: a margin of 2 for other RANSAC draws).
+// a structure plane's band (segment.scan_leftover_share) are dropped, and a solid that leaves its
+// points scattered by more than solve.scan_noise_ratio times their noise along the rings is no
+// answer, so few named solids remain beside the sphere (measured: 8; 12 before that noise test, 8
+// before a small segment's part at its own resolution counted its points, not its nodes; bound 10:
+// a margin of 2 for other RANSAC draws). Two of the four were spheres 1.8 and 5.6 m from the
+// calibration sphere, their points 6.5 and 7.2 times their noise from them (the calibration
+// sphere's: 1.4): no sphere but that one is named within 5 m of it.
 TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
   CLOUDSHAPE_REQUIRE_SHARED_DATA(spherecalib_path());
   const auto result = recognise_spherecalib();
@@ -231,7 +235,13 @@ TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
     }
   }
   EXPECT_EQ(spheres_there, 1u);
-  EXPECT_LE(named_elsewhere, 14u);
+  EXPECT_LE(named_elsewhere, 10u);
+  for (const auto& o : result.objects) {
+    const double off = (o.center - centre).norm();
+    if (o.shape == "sphere" && off >= 0.05) {
+      EXPECT_GT(off, 5.0) << "a sphere " << off << " m from the calibration sphere";
+    }
+  }
 }
 
 }  // namespace

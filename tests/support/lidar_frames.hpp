@@ -1,5 +1,6 @@
 // Synthetic lidar frames as the tests use them: cloudshape-synth's lidar layout, one object,
-// 1 cm range noise; the capture with its truth, or only its finite returns.
+// 1 cm range noise (`count` objects: the first a sphere, the others drawn from the six); the
+// capture with its truth, or only its finite returns.
 #pragma once
 
 #include <cstddef>
@@ -9,10 +10,12 @@
 
 namespace cloudshape::testing {
 
-inline synth::SceneCapture lidar_capture(std::uint64_t seed, std::size_t rings = synth::CaptureOptions{}.rings) {
+inline synth::SceneCapture lidar_capture(std::uint64_t seed,
+                                         std::size_t rings = synth::CaptureOptions{}.rings,
+                                         std::size_t count = 1) {
   synth::SceneRecipe recipe;
   recipe.layout = synth::SceneLayout::lidar;
-  recipe.count = 1;
+  recipe.count = count;
   recipe.seed = seed;
   synth::CaptureOptions options;
   options.range_noise = 0.01;
