@@ -11,6 +11,7 @@
 #endif
 
 #include "segment/detail/concave_creases.hpp"
+#include "segment/detail/depth_noise.hpp"
 #include "segment/detail/graph_moments.hpp"
 #include "segment/detail/median_pixel.hpp"
 
@@ -21,6 +22,9 @@ using detail::kNodesPerBlock;
 using detail::normal_of;
 
 namespace {
+
+// The depth noise is read on every this-th row: a median of a quarter of a frame's pixels.
+constexpr std::size_t kNoiseRowStep = 4;
 
 // A depth image as the normal windows read it: per pixel its (last) point and that point's range,
 // row-major, `width` wide; a pixel without a point has index -1 and a NaN range, which fails
@@ -212,10 +216,18 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
     g.node_of_point[i] = best;
   }
 
-  // Normals from the pixels around each node that lie on its side of every depth jump.
-  const std::ptrdiff_t reach = static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * stride);
-  // One pixel per cell is enough for a covariance, and keeps the cost per node fixed.
-  const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(stride);
+  // Normals from the pixels around each node that lie on its side of every depth jump. One pixel
+  // per cell is enough for a covariance, and keeps the cost per node fixed; where each pixel's
+  // depth is noisy on its own, the samples spread further, so that the noise tilts a normal by
+  // at most half the angle that parts smooth patches (one deviation along either axis): a table
+  // whose normals scatter beyond it is no plane to the structure search.
+  const double noise = detail::depth_noise_ratio({points, image, pixel_range, width, height},
+                                                 cfg.depth_jump, kNoiseRowStep);
+  const std::size_t window_step = detail::normal_window_step(
+      noise, stride, cfg.normal_radius, 0.5 * cfg.smooth_degrees, std::max(width, height));
+  const std::ptrdiff_t reach =
+      static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * window_step);
+  const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(window_step);
   const PixelImage image_view{image.data(), pixel_range.data(), width};
   g.normals.resize(g.size());
   g.curvature.resize(g.size());
