@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "lidar_frames.hpp"
 #include "pipeline/scan_fit.hpp"
 #include "synth/range_sensor.hpp"
 #include "synth/scene.hpp"
@@ -13,22 +14,17 @@
 namespace cloudshape {
 namespace {
 
-// A ball of radius 0.3 m, 4 m off, seen by a 16-beam lidar (every 2 degrees, 0.19 degrees of
-// azimuth) with `noise` of range noise: its finite returns.
+// A ball of radius 0.3 m, 4 m off, seen by the SphereCalib frame's lidar with `noise` of range
+// noise: its finite returns.
 PointList scanned_ball(double noise, std::uint64_t seed) {
   synth::Scene scene;
   synth::SolidSpec ball = synth::make_solid(synth::ShapeKind::sphere, {0.3}, {});
   ball.pose.center = Eigen::Vector3d(4.0, 0.3, 0.1);
   scene.objects.push_back({ball, 20});
-  synth::Lidar lidar;
-  lidar.rings = 16;
-  lidar.min_elevation_deg = -15.0;
-  lidar.max_elevation_deg = 15.0;
-  lidar.azimuth_step_deg = 0.19;
-  lidar.range_noise = noise;
   std::mt19937_64 rng(seed);
   PointList points;
-  for (const Point& p : synth::render(scene, lidar, synth::SensorPose{}, rng).points)
+  for (const Point& p :
+       synth::render(scene, testing::spherecalib_lidar(noise), synth::SensorPose{}, rng).points)
     if (p.allFinite()) points.push_back(p);
   return points;
 }

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "config/pipeline_config.hpp"
+#include "lidar_frames.hpp"
 #include "pipeline/recognize.hpp"
 #include "synth/range_sensor.hpp"
 #include "synth/scene.hpp"
@@ -23,14 +24,9 @@ namespace {
 PointList scan(const synth::SolidSpec& solid, std::uint64_t seed, std::size_t* rings_hit) {
   synth::Scene scene;
   scene.objects.push_back({solid, 20});
-  synth::Lidar lidar;
-  lidar.rings = 16;
-  lidar.min_elevation_deg = -15.0;
-  lidar.max_elevation_deg = 15.0;
-  lidar.azimuth_step_deg = 0.19;
-  lidar.range_noise = 0.01;
   std::mt19937_64 rng(seed);
-  const synth::RangeImage image = synth::render(scene, lidar, synth::SensorPose{}, rng);
+  const synth::RangeImage image =
+      synth::render(scene, testing::spherecalib_lidar(0.01), synth::SensorPose{}, rng);
   PointList points;
   std::set<std::size_t> rings;
   for (std::size_t i = 0; i < image.points.size(); ++i) {

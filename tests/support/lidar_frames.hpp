@@ -6,9 +6,22 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "synth/range_sensor.hpp"
 #include "synth/scene_capture.hpp"
 
 namespace cloudshape::testing {
+
+// The SphereCalib frame's sensor (SOURCES.md): 16 beams every 2 degrees from -15 to 15, 0.19
+// degrees of azimuth, with `range_noise` (1 cm measured there).
+inline synth::Lidar spherecalib_lidar(double range_noise = 0.01) {
+  synth::Lidar lidar;
+  lidar.rings = 16;
+  lidar.min_elevation_deg = -15.0;
+  lidar.max_elevation_deg = 15.0;
+  lidar.azimuth_step_deg = 0.19;
+  lidar.range_noise = range_noise;
+  return lidar;
+}
 
 inline synth::SceneCapture lidar_capture(std::uint64_t seed,
                                          std::size_t rings = synth::CaptureOptions{}.rings,
