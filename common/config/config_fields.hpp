@@ -30,6 +30,7 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("smoothing", c.smoothing);
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
+  f("noise_resolution", c.noise_resolution);
 }
 
 template <class F>

@@ -41,6 +41,7 @@ struct PreprocessConfig {
   bool smoothing = false;
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
+  double noise_resolution = 3.0;  // a depth image's pixels noisy on their own: an object's resolution at least this many times its points' noise (0: off)
 };
 
 struct PlanesConfig {

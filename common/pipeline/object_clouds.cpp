@@ -1,10 +1,18 @@
 #include "pipeline/object_clouds.hpp"
 
+#include <algorithm>
 #include <numeric>
 
+#include "pipeline/surface_noise.hpp"
 #include "segment/segment_scene.hpp"
 
 namespace cloudshape::pipeline {
+namespace {
+
+// Points in a neighbourhood whose spread off its plane reads the noise.
+constexpr std::size_t kNoiseNeighbours = 16;
+
+}  // namespace
 
 ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const config::PreprocessConfig& pre,
                            const config::SegmentConfig& seg, parallel::ThreadPool* pool) {
@@ -35,6 +43,18 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     for (std::uint32_t i : members) points.push_back(raw[i]);
     done[begin] = preprocess_cloud(points, pre, pool);
   });
+  // Where each pixel's depth is noisy on its own, more than the spacing of an object's points, a
+  // band of a few resolutions about a surface is narrower than the noise and selects points that
+  // happen to lie flat (a noisy ball's cap passes for a lid): the resolution is no finer than
+  // pre.noise_resolution times the points' noise off their surface.
+  if (scene.noisy_pixels && pre.noise_resolution > 0.0) {
+    parallel::for_blocks(pool, done.size(), 1, [&](std::size_t begin, std::size_t) {
+      PreprocessedCloud& p = done[begin];
+      if (!p.tree) return;
+      p.resolution = std::max(
+          p.resolution, pre.noise_resolution * surface_noise(p.points, *p.tree, kNoiseNeighbours));
+    });
+  }
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     PreprocessedCloud& p = done[k];
     if (p.points.empty()) continue;

@@ -15,7 +15,8 @@
 namespace cloudshape::pipeline {
 
 // One object's preprocessed points and the resolution (mean nearest-neighbour distance) they
-// were gridded at, and which raw points it was made from.
+// were gridded at (no finer than pre.noise_resolution times their noise off their surface where
+// the segmentation found the pixels noisy on their own), and which raw points it was made from.
 struct ObjectCloud {
   PointList points;
   double resolution = 0.0;

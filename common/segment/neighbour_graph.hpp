@@ -32,6 +32,9 @@ struct NeighbourGraph {
   std::vector<std::uint32_t> adjacency;
   std::vector<std::uint32_t> node_of_point;    // per input point: its node, or kNoNode
   std::optional<Point> viewpoint;              // the sensor's position, when known (organized clouds)
+  // Organized graphs: each pixel's depth carries noise of its own, enough to tilt a normal from
+  // neighbouring pixels beyond half of smooth_degrees (the normal windows spread for it).
+  bool noisy_pixels = false;
 
   std::size_t size() const { return nodes.size(); }
   template <class F>

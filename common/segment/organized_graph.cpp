@@ -225,6 +225,8 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
                                                  cfg.depth_jump, kNoiseRowStep);
   const std::size_t window_step = detail::normal_window_step(
       noise, stride, cfg.normal_radius, 0.5 * cfg.smooth_degrees, std::max(width, height));
+  g.noisy_pixels = detail::normal_window_step(noise, 1, cfg.normal_radius, 0.5 * cfg.smooth_degrees,
+                                              std::max(width, height)) > 1;
   const std::ptrdiff_t reach =
       static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * window_step);
   const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(window_step);

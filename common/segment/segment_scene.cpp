@@ -119,6 +119,7 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
   out.graph_nodes = g.size();
   if (!grid.organized()) orient_to_viewpoint(g, scan);
   out.viewpoint = g.viewpoint;
+  out.noisy_pixels = g.noisy_pixels;
   const bool from_inside = !grid.organized() && g.viewpoint.has_value();
   std::vector<char> removed(g.size(), 0);
   if (!isolated) out.structure = remove_structure(g, cfg, removed, pool, from_inside);

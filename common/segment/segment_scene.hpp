@@ -22,6 +22,8 @@ struct SceneSegmentation {
   std::optional<Point> viewpoint;         // the sensor's position, when the layout tells it
   std::size_t graph_nodes = 0;            // nodes of the first graph of the cloud (in a lidar frame a finer one may follow)
   bool lone_solid = false;  // segmented as one solid with no support in view (the isolated trial)
+  // An organized cloud whose pixels' depth carries noise of its own (NeighbourGraph::noisy_pixels).
+  bool noisy_pixels = false;
 };
 
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
