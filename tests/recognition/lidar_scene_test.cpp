@@ -11,6 +11,7 @@
 #include "config/pipeline_config.hpp"
 #include "lidar_frames.hpp"
 #include "pipeline/recognize.hpp"
+#include "report_of_label.hpp"
 #include "synth/ground_truth.hpp"
 #include "synth/scene_capture.hpp"
 
@@ -126,14 +127,8 @@ TEST(LidarScene, FewSolidsNamedWronglyOnFewRings) {
     const auto result = pipeline::recognize_cloud(points, cfg, "lidar");
     for (const auto& object : capture.scene.objects) {
       if (returns[object.label] < 30) continue;
-      // The report holding most of the object's returns, if any does.
-      const pipeline::ObjectResult* holder = nullptr;
-      std::size_t most = 0;
-      for (const auto& o : result.objects) {
-        std::size_t held = 0;
-        for (std::uint32_t i : o.point_indices) held += labels[i] == object.label ? 1 : 0;
-        if (held > most) most = held, holder = &o;
-      }
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, labels, object.label);
       if (!holder || holder->shape == "unknown") continue;
       const std::string truth = synth::to_string(object.solid.kind);
       if (holder->shape == truth) {

@@ -9,6 +9,7 @@
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
+#include "report_of_label.hpp"
 #include "synth/ground_truth.hpp"
 #include "synth/scene_capture.hpp"
 
@@ -46,13 +47,8 @@ TEST(NoisyDepthScene, BallsStaySpheres) {
     for (const synth::SceneObject& object : capture.scene.objects) {
       if (object.solid.kind != synth::ShapeKind::sphere) continue;
       ++balls;
-      const pipeline::ObjectResult* holder = nullptr;
-      std::size_t most = 0;
-      for (const auto& o : result.objects) {
-        std::size_t held = 0;
-        for (std::uint32_t i : o.point_indices) held += labels[i] == object.label ? 1 : 0;
-        if (held > most) most = held, holder = &o;
-      }
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, labels, object.label);
       SCOPED_TRACE("seed " + std::to_string(seed) + ", label " + std::to_string(object.label));
       ASSERT_NE(holder, nullptr);
       EXPECT_EQ(holder->shape, "sphere");
