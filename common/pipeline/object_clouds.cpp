@@ -27,6 +27,11 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     std::iota(scene.objects.back().begin(), scene.objects.back().end(), 0u);
     scene.scan_lines.assign(1, 0);
   }
+  // Where each pixel's depth is noisy on its own, more than the spacing of an object's points, a
+  // band of a few resolutions about a surface is narrower than the noise and selects points that
+  // happen to lie flat (a noisy ball's cap passes for a lid): the resolution is no finer than
+  // pre.noise_resolution times the points' noise off their surface.
+  const bool follow_noise = scene.noisy_pixels && pre.noise_resolution > 0.0;
   // Each object preprocessed in its own slot; the slots joined in object order.
   std::vector<PreprocessedCloud> done(scene.objects.size());
   parallel::for_blocks(pool, scene.objects.size(), 1, [&](std::size_t begin, std::size_t) {
@@ -34,27 +39,19 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     // An object of every point in input order (a lone solid) is the cloud itself: not copied.
     bool whole = members.size() == raw.size();
     for (std::size_t j = 0; whole && j < members.size(); ++j) whole = members[j] == j;
+    PreprocessedCloud& p = done[begin];
     if (whole) {
-      done[begin] = preprocess_cloud(raw, pre, pool);
-      return;
+      p = preprocess_cloud(raw, pre, pool);
+    } else {
+      PointList points;
+      points.reserve(members.size());
+      for (std::uint32_t i : members) points.push_back(raw[i]);
+      p = preprocess_cloud(points, pre, pool);
     }
-    PointList points;
-    points.reserve(members.size());
-    for (std::uint32_t i : members) points.push_back(raw[i]);
-    done[begin] = preprocess_cloud(points, pre, pool);
-  });
-  // Where each pixel's depth is noisy on its own, more than the spacing of an object's points, a
-  // band of a few resolutions about a surface is narrower than the noise and selects points that
-  // happen to lie flat (a noisy ball's cap passes for a lid): the resolution is no finer than
-  // pre.noise_resolution times the points' noise off their surface.
-  if (scene.noisy_pixels && pre.noise_resolution > 0.0) {
-    parallel::for_blocks(pool, done.size(), 1, [&](std::size_t begin, std::size_t) {
-      PreprocessedCloud& p = done[begin];
-      if (!p.tree) return;
+    if (follow_noise && p.tree)
       p.resolution = std::max(
           p.resolution, pre.noise_resolution * surface_noise(p.points, *p.tree, kNoiseNeighbours));
-    });
-  }
+  });
   for (std::size_t k = 0; k < scene.objects.size(); ++k) {
     PreprocessedCloud& p = done[k];
     if (p.points.empty()) continue;

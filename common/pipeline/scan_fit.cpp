@@ -1,25 +1,12 @@
 #include "pipeline/scan_fit.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "geometry/kdtree.hpp"
+#include "geometry/robust_spread.hpp"
 
 namespace cloudshape::pipeline {
-namespace {
-
-// A Gaussian's median absolute value is this many deviations.
-constexpr double kMedianAbsoluteDeviations = 0.6744897501960817;
-
-double median_of(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
-  std::nth_element(values.begin(), mid, values.end());
-  return *mid;
-}
-
-}  // namespace
 
 double scan_line_noise(const PointList& cloud, const Point& viewpoint) {
   PointList directions;
@@ -57,14 +44,14 @@ double scan_line_noise(const PointList& cloud, const Point& viewpoint) {
                          std::sqrt(1.0 + t * t + (1.0 - t) * (1.0 - t)));
   }
   if (deviations.size() < 3) return 0.0;
-  return median_of(std::move(deviations)) / kMedianAbsoluteDeviations;
+  return geometry::robust_deviation(std::move(deviations));
 }
 
 double scatter_about(const PointList& cloud, const FittedSolid& solid) {
   std::vector<double> distances;
   distances.reserve(cloud.size());
   for (const Point& p : cloud) distances.push_back(std::abs(solid.signed_distance(p)));
-  return median_of(std::move(distances)) / kMedianAbsoluteDeviations;
+  return geometry::robust_deviation(std::move(distances));
 }
 
 }  // namespace cloudshape::pipeline

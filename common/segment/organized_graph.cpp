@@ -223,10 +223,11 @@ NeighbourGraph build_organized_graph(const PointList& points, const GridLayout& 
   // whose normals scatter beyond it is no plane to the structure search.
   const double noise = detail::depth_noise_ratio({points, image, pixel_range, width, height},
                                                  cfg.depth_jump, kNoiseRowStep);
-  const std::size_t window_step = detail::normal_window_step(
-      noise, stride, cfg.normal_radius, 0.5 * cfg.smooth_degrees, std::max(width, height));
-  g.noisy_pixels = detail::normal_window_step(noise, 1, cfg.normal_radius, 0.5 * cfg.smooth_degrees,
-                                              std::max(width, height)) > 1;
+  // The step the noise alone asks for (from single pixels): beyond one, the pixels are noisy.
+  const std::size_t noise_step = detail::normal_window_step(
+      noise, 1, cfg.normal_radius, 0.5 * cfg.smooth_degrees, std::max(width, height));
+  g.noisy_pixels = noise_step > 1;
+  const std::size_t window_step = std::max(stride, noise_step);
   const std::ptrdiff_t reach =
       static_cast<std::ptrdiff_t>(std::max<std::int64_t>(1, cfg.normal_radius) * window_step);
   const std::ptrdiff_t step = static_cast<std::ptrdiff_t>(window_step);

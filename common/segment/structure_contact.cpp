@@ -5,7 +5,7 @@
 #include <limits>
 #include <utility>
 
-#include "segment/detail/robust_spread.hpp"
+#include "geometry/robust_spread.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -123,7 +123,7 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
     StructureFootprint& f = out[k];
     f.plane = planes[k].plane;
     f.cells = detail::CellValues(spacing[k].size());
-    f.cell = detail::median(std::move(spacing[k]));
+    f.cell = geometry::median(std::move(spacing[k]));
     geometry::plane_basis(f.plane.normal, f.u, f.v);
   }
   // The noise of the plane's own points: their median absolute distance (from the plane, or from
@@ -137,7 +137,8 @@ std::vector<StructureFootprint> structure_footprints(const PointList& points, co
   }
   for (std::size_t k = 0; k < planes.size(); ++k) {
     StructureFootprint& f = out[k];
-    f.band = std::max(cfg.contact_noise_sigmas * detail::robust_deviation(std::move(distance[k])), cfg.contact_min_band * f.cell);
+    f.band = std::max(cfg.contact_noise_sigmas * geometry::robust_deviation(std::move(distance[k])),
+                      cfg.contact_min_band * f.cell);
     if (f.cells.empty()) continue;
     f.lowest = std::numeric_limits<double>::infinity();
     f.highest = -std::numeric_limits<double>::infinity();

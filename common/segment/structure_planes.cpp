@@ -6,8 +6,8 @@
 #include <random>
 
 #include "geometry/pca.hpp"
+#include "geometry/robust_spread.hpp"
 #include "segment/detail/key_index.hpp"
-#include "segment/detail/robust_spread.hpp"
 #include "segment/structure_band.hpp"
 #include "segment/structure_planes_scoring.hpp"
 
@@ -207,7 +207,7 @@ double median_spacing(const NeighbourGraph& g, const std::vector<std::uint32_t>&
   std::vector<double> s;
   s.reserve(nodes.size());
   for (std::uint32_t n : nodes) s.push_back(g.spacing[n]);
-  return detail::median(std::move(s));
+  return geometry::median(std::move(s));
 }
 
 // The plane's nodes' spread about it, robustly (detail::robust_deviation of their distances).
@@ -215,7 +215,7 @@ double node_deviation(const NeighbourGraph& g, const PlaneFit& fit) {
   std::vector<double> distance;
   distance.reserve(fit.inliers.size());
   for (std::uint32_t n : fit.inliers) distance.push_back(std::abs(fit.plane.signed_distance(g.nodes[n])));
-  return detail::robust_deviation(std::move(distance));
+  return geometry::robust_deviation(std::move(distance));
 }
 
 // A wall or ground seen from inside the scene (a lidar among them): nearly all else lies on the

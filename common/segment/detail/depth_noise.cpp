@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/robust_spread.hpp"
 #include "segment/neighbour_graph.hpp"
 
 namespace cloudshape::segment::detail {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// A Gaussian's median absolute value is this many deviations.
-constexpr double kMedianAbsoluteDeviations = 0.6744897501960817;
 
 }  // namespace
 
@@ -31,9 +30,7 @@ double depth_noise_ratio(const DepthImage& image, double depth_jump, std::size_t
     }
   }
   if (ratios.size() < 3) return 0.0;
-  const auto mid = ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2);
-  std::nth_element(ratios.begin(), mid, ratios.end());
-  return *mid / kMedianAbsoluteDeviations / std::sqrt(1.5);
+  return geometry::robust_deviation(std::move(ratios)) / std::sqrt(1.5);
 }
 
 std::size_t normal_window_step(double noise_ratio, std::size_t stride, std::int64_t radius,

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace cloudshape::segment::detail {
+namespace cloudshape::geometry {
 
 // The middle value (the upper of the two middle ones for an even count); 0 for none.
 inline double median(std::vector<double> values) {
@@ -17,7 +17,10 @@ inline double median(std::vector<double> values) {
   return *mid;
 }
 
-// Absolute distances from a surface as a normal deviation: their median scaled by 1.4826.
-inline double robust_deviation(std::vector<double> distances) { return 1.4826 * median(std::move(distances)); }
+// Absolute distances from a surface (or any absolute deviations) as a normal deviation: their
+// median scaled by 1.4826 (a Gaussian's median absolute value is 1 / 1.4826 deviations).
+inline double robust_deviation(std::vector<double> distances) {
+  return 1.4826 * median(std::move(distances));
+}
 
-}  // namespace cloudshape::segment::detail
+}  // namespace cloudshape::geometry
