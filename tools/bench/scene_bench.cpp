@@ -109,26 +109,30 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-// Every coordinate moved by Gaussian noise of `share` of the cloud's point spacing.
-void jitter_points(PointList& points, double share, std::uint64_t seed) {
-  const double sigma = share * geometry::mean_nearest_neighbour_distance(points);
-  if (!(sigma > 0.0)) return;
-  std::mt19937_64 rng(seed);
-  synth::add_gaussian_noise(points, sigma, rng);
+// The scene's cloud, which must carry its labels.
+io::CloudFile read_labelled_scene(const Scene& scene) {
+  io::CloudFile cloud = read_scene(scene.path);
+  if (cloud.labels.empty())
+    throw InputError{scene.path.string() +
+                     ": no label field, but the truth lists it as a labelled scene"};
+  return cloud;
 }
 
-// `jitter`: the share of the point spacing the scene's points are moved by (0: as read), with
-// `seed`; `run_label` names the run in the per-scene lines.
-SceneRun run_scene(const Scene& scene, const config::PipelineConfig& cfg,
-                   parallel::ThreadPool* pool, double jitter = 0.0, std::uint64_t seed = 0,
+// Every coordinate moved by Gaussian noise of `sigma` (none for a cloud of no spacing).
+io::CloudFile jittered(io::CloudFile cloud, double sigma, std::uint64_t seed) {
+  if (!(sigma > 0.0)) return cloud;
+  std::mt19937_64 rng(seed);
+  synth::add_gaussian_noise(cloud.points, sigma, rng);
+  return cloud;
+}
+
+// One run of the scene's `cloud` (as read or jittered): recognised and scored; `run_label` names
+// the run in the per-scene lines.
+SceneRun run_scene(const Scene& scene, const io::CloudFile& cloud,
+                   const config::PipelineConfig& cfg, parallel::ThreadPool* pool,
                    const std::string& run_label = "") {
   const fs::path& path = scene.path;
   const SceneTruth& truth = scene.truth;
-  io::CloudFile cloud = read_scene(path);
-  if (cloud.labels.empty())
-    throw InputError{path.string() +
-                     ": no label field, but the truth lists it as a labelled scene"};
-  if (jitter > 0.0) jitter_points(cloud.points, jitter, seed);
   SceneRun run;
   run.file = path.filename().string() + run_label;
   run.category = truth.category;
@@ -202,14 +206,18 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
+    const io::CloudFile cloud = read_labelled_scene(scenes[k]);
     if (!(options.jitter > 0.0)) {
-      runs.push_back(run_scene(scenes[k], cfg, options.pool));
+      runs.push_back(run_scene(scenes[k], cloud, cfg, options.pool));
       continue;
     }
+    // Jittered runs: every coordinate moved by Gaussian noise of options.jitter of the point
+    // spacing (the file's, as read), seeded per scene and run; the file read once.
+    const double sigma = options.jitter * geometry::mean_nearest_neighbour_distance(cloud.points);
     for (int r = 0; r < options.jitter_runs; ++r)
-      runs.push_back(run_scene(scenes[k], cfg, options.pool, options.jitter,
-                               1000003ull * k + static_cast<std::uint64_t>(r),
-                               "~" + std::to_string(r + 1)));
+      runs.push_back(run_scene(
+          scenes[k], jittered(cloud, sigma, 1000003ull * k + static_cast<std::uint64_t>(r)), cfg,
+          options.pool, "~" + std::to_string(r + 1)));
   }
   if (progress) std::fprintf(stderr, "\r%70s\r", "");
   const double seconds =
