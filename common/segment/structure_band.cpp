@@ -107,7 +107,8 @@ std::vector<std::uint32_t> band_nodes(const NeighbourGraph& g,
 
 void nodes_above(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
                  const std::vector<char>& skip, const geometry::Plane& p, double low, double high,
-                 std::vector<std::uint32_t>& above, std::vector<std::uint32_t>& near) {
+                 double lift, std::vector<std::uint32_t>& above, std::vector<std::uint32_t>& near) {
+  const bool lifted = lift > 0.0;
   above.reserve(nodes.size());
   Block up, close;
 #if defined(__SSE2__)
@@ -115,7 +116,8 @@ void nodes_above(const NeighbourGraph& g, const std::vector<std::uint32_t>& node
   const double* spacing = g.spacing.data();
   const __m128d a = _mm_set1_pd(p.normal.x()), b = _mm_set1_pd(p.normal.y()),
                 c = _mm_set1_pd(p.normal.z());
-  const __m128d offset = _mm_set1_pd(p.offset), vlow = _mm_set1_pd(low), vhigh = _mm_set1_pd(high);
+  const __m128d offset = _mm_set1_pd(p.offset), vlow = _mm_set1_pd(low), vhigh = _mm_set1_pd(high),
+                vlift = _mm_set1_pd(lift);
   const __m128d zero = _mm_setzero_pd();
 #endif
   for (std::size_t begin = 0; begin < nodes.size(); begin += kBlock) {
@@ -126,25 +128,28 @@ void nodes_above(const NeighbourGraph& g, const std::vector<std::uint32_t>& node
       const std::uint32_t n0 = nodes[i], n1 = nodes[i + 1];
       const Lanes x = load_lanes(position + 3 * static_cast<std::size_t>(n0),
                                  position + 3 * static_cast<std::size_t>(n1));
-      const __m128d height = _mm_div_pd(signed_distance(x, a, b, c, offset),
-                                        _mm_loadh_pd(_mm_load_sd(spacing + n0), spacing + n1));
+      const __m128d distance = signed_distance(x, a, b, c, offset);
+      const __m128d height =
+          _mm_div_pd(distance, _mm_loadh_pd(_mm_load_sd(spacing + n0), spacing + n1));
       const int skipped = (skip[n0] != 0) | (skip[n1] != 0) << 1;
-      const int up_bits = _mm_movemask_pd(_mm_cmpnle_pd(height, zero)) & ~skipped;
+      const int lifted_bits = lifted ? _mm_movemask_pd(_mm_cmpnle_pd(distance, vlift)) : 3;
+      const int up_bits = _mm_movemask_pd(_mm_cmpnle_pd(height, zero)) & lifted_bits & ~skipped;
       const int close_bits =
           _mm_movemask_pd(_mm_and_pd(_mm_cmpgt_pd(height, vlow), _mm_cmple_pd(height, vhigh))) &
-          up_bits;
+          ~skipped;
       keep_two(up, up_end, n0, n1, up_bits);
       keep_two(close, close_end, n0, n1, close_bits);
     }
 #endif
     for (; i < end; ++i) {
       const std::uint32_t n = nodes[i];
-      const double height = p.signed_distance(g.nodes[n]) / g.spacing[n];
-      const bool is_up = !skip[n] && !(height <= 0.0);
+      const double distance = p.signed_distance(g.nodes[n]);
+      const double height = distance / g.spacing[n];
+      const bool is_up = !skip[n] && !(height <= 0.0) && (!lifted || !(distance <= lift));
       up[up_end] = n;
       up_end += is_up ? 1 : 0;
       close[close_end] = n;
-      close_end += is_up && height > low && height <= high ? 1 : 0;
+      close_end += !skip[n] && height > low && height <= high ? 1 : 0;
     }
     above.insert(above.end(), up.begin(), up.begin() + static_cast<std::ptrdiff_t>(up_end));
     near.insert(near.end(), close.begin(), close.begin() + static_cast<std::ptrdiff_t>(close_end));

@@ -18,11 +18,12 @@ std::vector<std::uint32_t> band_nodes(const NeighbourGraph& g,
                                       const geometry::Plane& p, double band, double min_cos);
 
 // The nodes of `nodes` not flagged in `skip` whose height over `p`, p.signed_distance(node) /
-// spacing, is not at most 0 (NaN too) appended to `above`, and those of them with a height in (low,
-// high] to `near`; each in their order.
+// spacing, is not at most 0 (NaN too) and, when `lift` > 0, whose signed distance is not at most
+// `lift` either, appended to `above`; those not flagged with a height in (low, high] to `near`;
+// each in their order. (`lift` is the plane's own noise: its nodes lifted by it stand on nothing.)
 void nodes_above(const NeighbourGraph& g, const std::vector<std::uint32_t>& nodes,
                  const std::vector<char>& skip, const geometry::Plane& p, double low, double high,
-                 std::vector<std::uint32_t>& above, std::vector<std::uint32_t>& near);
+                 double lift, std::vector<std::uint32_t>& above, std::vector<std::uint32_t>& near);
 
 // The nodes not `removed` appended to `active`, those of them not `tried` either to `searched`, and
 // those of them with a curvature below `max_curvature` to `seeds`; each ascending.

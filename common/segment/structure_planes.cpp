@@ -274,10 +274,13 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
       fit.plane.normal = -fit.plane.normal;
       fit.plane.offset = -fit.plane.offset;
     }
-    // What stands on the plane, and where it touches it: the nodes just above its band.
+    // What stands on the plane, and where it touches it: the nodes just above its band. The plane's
+    // own nodes that its noise lifts off it and tilts out of its band stand on nothing: counted as
+    // standing, they would spread the footprint over the plane itself.
+    const double lift = g.noisy_pixels ? cfg.contact_noise_sigmas * node_deviation(g, fit) : 0.0;
     std::vector<std::uint32_t> standing, contact;
-    nodes_above(g, active, inlier, fit.plane, cfg.structure_band, cfg.structure_contact * cfg.structure_band, standing,
-                contact);
+    nodes_above(g, active, inlier, fit.plane, cfg.structure_band,
+                cfg.structure_contact * cfg.structure_band, lift, standing, contact);
     const double cell = 2.0 * median_spacing(g, fit.inliers);
     // Nodes of no spacing (one repeated point) span no area to compare.
     if (!(cell > 0.0)) {

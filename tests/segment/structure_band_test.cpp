@@ -78,7 +78,7 @@ TEST(StructureBand, NodesAboveAsTheScalarTestHasThem) {
   std::uniform_real_distribution<double> u(-5.0, 5.0);
   std::normal_distribution<double> gauss(0.0, 1.0);
   const double low = 3.0, high = 3.0 * 2.5;
-  std::size_t above_total = 0, near_total = 0, on_bound = 0;
+  std::size_t above_total = 0, near_total = 0, on_bound = 0, lifted = 0;
   for (int trial = 0; trial < 200; ++trial) {
     geometry::Plane p;
     p.normal = Eigen::Vector3d(gauss(rng), gauss(rng), gauss(rng)).normalized();
@@ -107,14 +107,23 @@ TEST(StructureBand, NodesAboveAsTheScalarTestHasThem) {
     for (std::uint32_t n = 0; n < size; ++n) {
       if (n % 9 != 8) nodes.push_back(n);
     }
+    // Every other trial lifts the plane by its noise: the nodes up to `lift` above it stand on
+    // nothing.
+    const double lift = trial % 2 == 0 ? 0.0 : 0.5 + 0.01 * trial;
     for (std::uint32_t n : nodes) {
-      const double height = p.signed_distance(g.nodes[n]) / g.spacing[n];
-      if (skip[n] || height <= 0.0) continue;
-      expected_above.push_back(n);
+      const double distance = p.signed_distance(g.nodes[n]);
+      const double height = distance / g.spacing[n];
+      if (skip[n]) continue;
       if (height > low && height <= high) expected_near.push_back(n);
       on_bound += height == low || height == high ? 1 : 0;
+      if (height <= 0.0) continue;
+      if (lift > 0.0 && distance <= lift) {
+        ++lifted;
+        continue;
+      }
+      expected_above.push_back(n);
     }
-    nodes_above(g, nodes, skip, p, low, high, above, near);
+    nodes_above(g, nodes, skip, p, low, high, lift, above, near);
     EXPECT_EQ(above, expected_above) << "trial " << trial;
     EXPECT_EQ(near, expected_near) << "trial " << trial;
     above_total += above.size();
@@ -123,6 +132,7 @@ TEST(StructureBand, NodesAboveAsTheScalarTestHasThem) {
   EXPECT_GT(above_total, 10000u);
   EXPECT_GT(near_total, 1000u);
   EXPECT_GT(on_bound, 1000u);  // heights exactly on the bounds were tested
+  EXPECT_GT(lifted, 1000u);    // and nodes within the lift
 }
 
 TEST(StructureBand, SplitNodesAsTheFlagsHaveThem) {
