@@ -10,6 +10,7 @@
 #include "segment/convex_segments.hpp"
 #include "segment/neighbour_graph.hpp"
 #include "segment/own_resolution.hpp"
+#include "segment/pinhole_grid.hpp"
 #include "segment/remainder_graph.hpp"
 #include "segment/scan_beams.hpp"
 #include "segment/scan_origin.hpp"
@@ -288,6 +289,11 @@ SceneSegmentation segment_part(const PointList& points, const GridLayout& grid,
 
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool) {
+  // A depth image that lost its grid on the way (an export to PLY or XYZ) is still one.
+  if (!grid.organized()) {
+    if (const std::optional<GridLayout> pixels = pinhole_grid(points))
+      return segment_scene(points, *pixels, cfg, pool);
+  }
   SceneSegmentation out = segment_part(points, grid, cfg, pool, std::nullopt, true);
   // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
   // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is

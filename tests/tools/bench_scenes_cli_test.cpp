@@ -186,6 +186,29 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   EXPECT_NE(table.out.find("2 scenes of"), std::string::npos) << table.out;
 }
 
+// --unorganized: the two frames' grids dropped (as a PLY export drops them), recovered from the
+// points' directions: the same labelled objects, named right as read (learn0's two boxes, learn33's
+// five cans; 6 of 7 as a voxel graph, before the grid was recovered: a can seen into named a
+// sphere).
+TEST_F(BenchScenes, UnorganizedDropsEachScenesGrid) {
+  const fs::path learn = testing::shared_data_path("real/mosd_learn");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
+  const fs::path d = sub("unorganized");
+  fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
+  fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json", "--unorganized"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  EXPECT_EQ(out.at("settings").at("unorganized"), true);
+  for (const auto& scene : out.at("scenes"))
+    EXPECT_EQ(scene.at("organized"), false) << scene.at("file");
+  const Json& all = out.at("rows").back();
+  EXPECT_EQ(all.at("objects"), 7);
+  EXPECT_EQ(all.at("right"), 7);
+  EXPECT_EQ(all.at("false_objects"), 0);
+}
+
 // The scene gate: all 45 labelled Kinect frames of mosd_learn, per category, floors a few
 // points under docs/performance.md's table (cloudshape-bench --scenes): objects named right,
 // segmentation overlap, false objects and duplicates per scene. About 5 s.

@@ -6,7 +6,7 @@
 //                    [--seed S] [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
 //   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
-//                    [--jitter SHARE [--jitter-runs R]]
+//                    [--jitter SHARE [--jitter-runs R]] [--unorganized]
 //                    (labelled real or synthetic scenes: see scene_bench.hpp)
 //   cloudshape-bench --pool [--threads N] [--json]
 //                    (what a parallel run costs on the thread pool: see pool_bench.hpp)
@@ -190,6 +190,10 @@ int main(int argc, char** argv) {
   app.add_option("--jitter-runs", scenes.jitter_runs, "--scenes --jitter: runs per scene")
       ->default_val(3)
       ->check(CLI::Range(1, 100));
+  app.add_flag(
+      "--unorganized", scenes.unorganized,
+      "--scenes: drop each scene's pixel grid first (the same points unorganized, as a PLY "
+      "or XYZ export of the frame has them)");
   bool pool_bench = false;
   app.add_flag(
          "--pool", pool_bench,

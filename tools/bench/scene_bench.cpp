@@ -109,12 +109,13 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-// The scene's cloud, which must carry its labels.
-io::CloudFile read_labelled_scene(const Scene& scene) {
+// The scene's cloud, which must carry its labels; without its pixel grid when `unorganized`.
+io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized) {
   io::CloudFile cloud = read_scene(scene.path);
   if (cloud.labels.empty())
     throw InputError{scene.path.string() +
                      ": no label field, but the truth lists it as a labelled scene"};
+  if (unorganized) cloud.grid = GridLayout{};
   return cloud;
 }
 
@@ -206,7 +207,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
-    const io::CloudFile cloud = read_labelled_scene(scenes[k]);
+    const io::CloudFile cloud = read_labelled_scene(scenes[k], options.unorganized);
     if (!(options.jitter > 0.0)) {
       runs.push_back(run_scene(scenes[k], cloud, cfg, options.pool));
       continue;
@@ -236,6 +237,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     settings["seconds"] = seconds;
     settings["jitter"] = options.jitter;
     settings["jitter_runs"] = options.jitter > 0.0 ? options.jitter_runs : 1;
+    settings["unorganized"] = options.unorganized;
     std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
   } else {
     print_scene_table(rows, stdout);

@@ -26,6 +26,9 @@ struct SceneOptions {
   // side.
   double jitter = 0.0;
   int jitter_runs = 3;
+  // --unorganized: each scene's pixel grid dropped before it is recognised, as an export of the
+  // same frame to PLY or XYZ drops it (the same points, in the same order).
+  bool unorganized = false;
 };
 
 // Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,
