@@ -19,23 +19,24 @@ constexpr std::size_t kMaxSide = 16384;     // pixels along a side: larger is no
 constexpr std::size_t kStepSamples = 4096;  // consecutive pairs read for the column step
 
 struct Lattice {
-  double origin = 0.0;  // the smallest coordinate: index 0
+  double origin =
+      0.0;  // the coordinate of index 0: the smallest, or the largest for a negative step
   double step = 0.0;
   std::size_t size = 0;  // indices 0 .. size - 1
 };
 
-// The lattice of `values` (min, max) given a rough step (within a few per cent: a rounded index at
-// the far end is exact), its step refined over the whole span; nothing when the span is no
+// The lattice spanning [lo, hi] given a rough signed step (within a few per cent: a rounded index
+// at the far end is exact), its step refined over the whole span; nothing when the span is no
 // multiple of the rough step or too many steps.
 std::optional<Lattice> lattice_over(double lo, double hi, double rough) {
-  if (!(rough > 0.0) || !(hi >= lo)) return std::nullopt;
-  const double steps = (hi - lo) / rough;
+  if (!(rough != 0.0) || !(hi >= lo)) return std::nullopt;
+  const double steps = (hi - lo) / std::abs(rough);
   if (!(steps < static_cast<double>(kMaxSide))) return std::nullopt;
   const double whole = std::round(steps);
   if (std::abs(steps - whole) > kTolerance) return std::nullopt;
   Lattice l;
-  l.origin = lo;
-  l.step = whole > 0.0 ? (hi - lo) / whole : rough;
+  l.origin = rough > 0.0 ? lo : hi;
+  l.step = whole > 0.0 ? std::copysign((hi - lo) / whole, rough) : rough;
   l.size = static_cast<std::size_t>(whole) + 1;
   return l;
 }
@@ -57,37 +58,44 @@ std::optional<GridLayout> pinhole_grid(const PointList& points) {
   const auto a = [&points](std::size_t i) { return points[i].x() / points[i].z(); };
   const auto b = [&points](std::size_t i) { return points[i].y() / points[i].z(); };
   double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
+  // The camera looks along +z (drivers, ROS optical frames) or -z (a flip for display, as
+  // OpenGL's convention has it): every point on one side of its plane.
+  const bool ahead = points[0].z() > 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(points[i].z() > 0.0)) return std::nullopt;
+    if (!(ahead ? points[i].z() > 0.0 : points[i].z() < 0.0)) return std::nullopt;
     a_lo = std::min(a_lo, a(i));
     a_hi = std::max(a_hi, a(i));
     b_lo = std::min(b_lo, b(i));
     b_hi = std::max(b_hi, b(i));
   }
   // The column step: consecutive points of a row are neighbouring pixels (or a few apart across a
-  // hole), rows change once a row, so the median of consecutive differences is one step.
+  // hole), rows change once a row, so the median of consecutive differences is one step (negative
+  // where the columns run against x / z).
   const std::size_t stride = std::max<std::size_t>(1, (n - 1) / kStepSamples);
   std::vector<double> da;
   da.reserve(kStepSamples + 1);
   for (std::size_t i = 0; i + 1 < n; i += stride) da.push_back(a(i + 1) - a(i));
   std::nth_element(da.begin(), da.begin() + static_cast<std::ptrdiff_t>(da.size() / 2), da.end());
   const double column_step = da[da.size() / 2];
-  if (!(column_step > 0.0)) return std::nullopt;
+  if (!(column_step != 0.0) || !std::isfinite(column_step)) return std::nullopt;
   // The row step: the smallest change of y / z from one point to the next that is no rounding
-  // (more than a quarter of a column step: pixels are about square), one row down.
-  double row_step = INFINITY;
+  // (more than a quarter of a column step: pixels are about square), one row on, signed as the
+  // first such change (rows running the other way too are no raster order: the pixels fail).
+  double row_step = 0.0;
   for (std::size_t i = 0; i + 1 < n; ++i) {
     const double d = b(i + 1) - b(i);
-    if (d > 0.25 * column_step) row_step = std::min(row_step, d);
+    if (!(std::abs(d) > 0.25 * std::abs(column_step))) continue;
+    if (row_step == 0.0 ||
+        (std::signbit(d) == std::signbit(row_step) && std::abs(d) < std::abs(row_step)))
+      row_step = d;
   }
-  if (!std::isfinite(row_step)) row_step = column_step;  // one row
+  if (row_step == 0.0) return std::nullopt;  // one row: no image
   const auto columns = lattice_over(a_lo, a_hi, column_step);
   const auto rows = lattice_over(b_lo, b_hi, row_step);
   if (!columns || !rows) return std::nullopt;
   GridLayout grid;
   grid.width = columns->size;
   grid.height = rows->size;
-  if (grid.height < 2) return std::nullopt;
   grid.pixel.resize(n);
   std::int64_t previous = -1;
   for (std::size_t i = 0; i < n; ++i) {

@@ -9,11 +9,12 @@
 namespace cloudshape::segment {
 
 // The pixel grid of `points` when they are a pinhole camera's depth image in the camera's frame
-// (the sensor at the origin looking along +z, as every RGB-D driver writes them) in raster order:
-// every point in front of the camera (z > 0), its x / z and y / z on two evenly spaced lattices
-// (columns and rows, one step each, read from consecutive points) within a tenth of a step, and
-// the pixels so found strictly increasing. Anything else (a scan, a lidar frame, a mesh's samples,
-// points shuffled) gives nothing, mostly after a few hundred points. One pass over the points.
+// (the sensor at the origin looking along +z, as every RGB-D driver writes them, or along -z, as a
+// flip for display leaves them) in raster order: every point on the camera's side of its plane, its
+// x / z and y / z on two evenly spaced lattices (columns and rows, one step each, either sign, read
+// from consecutive points) within a tenth of a step, and the pixels so found strictly increasing.
+// Anything else (a scan, a lidar frame, a mesh's samples, points shuffled) gives nothing, mostly
+// within the first pass. A few passes over the points, no copy of them.
 std::optional<GridLayout> pinhole_grid(const PointList& points);
 
 }  // namespace cloudshape::segment

@@ -77,6 +77,19 @@ TEST(PinholeGrid, SixSignificantDigitsKeepThePixels) {
   expect_same_pixels(scene.grid, *grid);
 }
 
+// Flipped for display (y up, the camera looking along -z), or mirrored (columns against x).
+TEST(PinholeGrid, AFlippedOrMirroredFrameKeepsItsPixels) {
+  const CapturedScene scene = touching_boxes();
+  PointList flipped = scene.points, mirrored = scene.points;
+  for (Point& p : flipped) p = Point(p.x(), -p.y(), -p.z());
+  for (Point& p : mirrored) p.x() = -p.x();
+  for (const PointList* points : {&flipped, &mirrored}) {
+    const auto grid = pinhole_grid(*points);
+    ASSERT_TRUE(grid.has_value());
+    expect_same_pixels(scene.grid, *grid);
+  }
+}
+
 TEST(PinholeGrid, NoGridWhereThePointsAreNoCameraImageInRasterOrder) {
   const CapturedScene scene = touching_boxes();
   // Shuffled: the pixels do not increase.
