@@ -179,6 +179,13 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   for (const auto& scene : out.at("scenes")) {
     EXPECT_EQ(scene.at("organized"), true) << scene.at("file");
     EXPECT_GT(scene.at("points").get<int>(), 100000) << scene.at("file");
+    // Each report with the confidence the recognition gave it (calibration: right against wrong).
+    for (const auto& report : scene.at("reports")) {
+      const double confidence = report.at("confidence").get<double>();
+      EXPECT_TRUE(report.at("shape") == "unknown" ? confidence == 0.0
+                                                  : confidence > 0.3 && confidence <= 1.0)
+          << scene.at("file") << " " << report.at("shape") << " " << confidence;
+    }
   }
   const auto table = run_process({kBin, "--scenes", d.string()});
   ASSERT_EQ(table.exit_code, 0) << table.err;

@@ -152,6 +152,7 @@ SceneRun run_scene(const Scene& scene, const io::CloudFile& cloud,
   for (const auto& o : result.objects) {
     reported.push_back(reported_object(o));
     run.reported_shapes.push_back(o.shape);
+    run.reported_confidences.push_back(o.confidence);
   }
   try {
     run.score = score_scene(cloud.points, cloud.labels, truth, reported);

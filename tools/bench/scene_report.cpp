@@ -185,6 +185,7 @@ nlohmann::ordered_json scenes_json(const std::vector<SceneRun>& runs,
       const ReportScore& s = r.score.reports[k];
       nlohmann::ordered_json rj;
       rj["shape"] = r.reported_shapes[k];
+      if (k < r.reported_confidences.size()) rj["confidence"] = r.reported_confidences[k];
       rj["kind"] = to_string(s.kind);
       rj["label"] =
           s.label != 0 ? nlohmann::ordered_json(s.label) : nlohmann::ordered_json(nullptr);
