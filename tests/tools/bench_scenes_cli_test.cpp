@@ -85,6 +85,14 @@ class BenchScenes : public ::testing::Test {
     return dir_ / name;
   }
 
+  // A directory `name` holding links to mosd_learn's learn0 (two boxes) and learn33 (five cans).
+  fs::path two_mosd_frames(const fs::path& learn, const std::string& name) {
+    const fs::path d = sub(name);
+    fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
+    fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
+    return d;
+  }
+
   fs::path dir_;
 };
 
@@ -155,9 +163,7 @@ TEST_F(BenchScenes, TwoRealMosdFramesUnderTheDefaultTruth) {
   const fs::path learn = testing::shared_data_path("real/mosd_learn");
   CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
   CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
-  const fs::path d = sub("mosd");
-  fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
-  fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
+  const fs::path d = two_mosd_frames(learn, "mosd");
   const auto run = run_process({kBin, "--scenes", d.string(), "--json"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json out = Json::parse(run.out);
@@ -201,9 +207,7 @@ TEST_F(BenchScenes, UnorganizedDropsEachScenesGrid) {
   const fs::path learn = testing::shared_data_path("real/mosd_learn");
   CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
   CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
-  const fs::path d = sub("unorganized");
-  fs::create_symlink(learn / "learn0.pcd", d / "learn0.pcd");
-  fs::create_symlink(learn / "learn33.pcd", d / "learn33.pcd");
+  const fs::path d = two_mosd_frames(learn, "unorganized");
   const auto run = run_process({kBin, "--scenes", d.string(), "--json", "--unorganized"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const Json out = Json::parse(run.out);
