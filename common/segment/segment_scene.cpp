@@ -97,6 +97,23 @@ std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
   return parts;
 }
 
+// Whether an unorganized cloud with a support in view is a depth camera's frame seen from the
+// origin (the sensor's own frame, as drivers write it): every point on one side of the camera's
+// plane z = 0, and the origin on the open side of the first structure plane, at least a quarter of
+// the points' extent off it (a camera looks down at a table from well above it; a scene written in
+// a world frame has its origin on its floor or table, or nowhere near a view of it).
+bool seen_by_camera(const PointList& points, const std::vector<StructurePlane>& structure) {
+  if (structure.empty() || points.empty()) return false;
+  const bool ahead = points.front().z() > 0.0;
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
+  for (const Point& p : points) {
+    if (!(ahead ? p.z() > 0.0 : p.z() < 0.0)) return false;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return structure.front().plane.signed_distance(Point::Zero()) >= 0.25 * (hi - lo).norm();
+}
+
 // One object holding all the points but fewer than cfg.min_object_nodes of them: so few points
 // make fewer nodes than an object needs at any resolution, so nothing the scene's finer graph
 // could keep was left out.
@@ -150,8 +167,18 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
       out.structure.insert(out.structure.end(), more.begin(), more.end());
     }
   }
+  // A depth camera's frame without its grid (downsampled, or never in raster order): every point
+  // in front of the camera's plane and the support far on the camera's side. Its normals then
+  // face the camera, as an organized frame's do, and the depth image's segmentation rules hold.
+  const bool camera =
+      !grid.organized() && !g.viewpoint && !isolated && seen_by_camera(points, out.structure);
+  if (camera) {
+    orient_to_viewpoint(g, Point::Zero());
+    out.viewpoint = g.viewpoint;
+    out.camera_view = true;
+  }
   if (!g.viewpoint) orient_normals_outward(g, removed);
-  std::vector<std::int32_t> label = convex_segments(g, removed, cfg, grid.organized());
+  std::vector<std::int32_t> label = convex_segments(g, removed, cfg, grid.organized() || camera);
   join_cavities(g, label, cfg);
 
   std::int32_t segments = 0;
@@ -298,7 +325,7 @@ SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid,
   // A lidar frame's object on fewer than cfg.scan_object_min_beams beams is a strip of its ground
   // or walls (one ring samples no vertical extent), and one mostly in a structure plane's band is
   // a leftover of that plane.
-  if (grid.organized() || !out.viewpoint) {
+  if (grid.organized() || !out.viewpoint || out.camera_view) {
     out.scan_lines.assign(out.objects.size(), 0);
     return out;
   }

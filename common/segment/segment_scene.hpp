@@ -20,6 +20,7 @@ struct SceneSegmentation {
   std::vector<std::uint32_t> scan_lines;
   std::vector<StructurePlane> structure;  // tables, floors, walls removed
   std::optional<Point> viewpoint;         // the sensor's position, when the layout tells it
+  bool camera_view = false;  // an unorganized depth camera's frame (viewpoint: the origin)
   std::size_t graph_nodes = 0;            // nodes of the first graph of the cloud (in a lidar frame a finer one may follow)
   bool lone_solid = false;  // segmented as one solid with no support in view (the isolated trial)
   // An organized cloud whose pixels' depth carries noise of its own (NeighbourGraph::noisy_pixels).
@@ -42,8 +43,10 @@ struct SceneSegmentation {
 // out at cfg.isolated_target_nodes (or at the scene's own voxel, where that budget coarsens
 // nothing) as one object leaving out fewer than cfg.min_object_nodes points is segmented there: a
 // lone solid needs no finer graph; any other is segmented at the scene's
-// budget, as without that trial. A `pool` builds
-// the graph's normals on its threads: the same segments.
+// budget, as without that trial. An unorganized scene in front of the camera's plane z = 0 whose
+// first structure plane has the origin far on its open side is a depth camera's frame without its
+// grid (camera_view): its normals face the origin and the depth image's rules of convex_segments
+// hold. A `pool` builds the graph's normals on its threads: the same segments.
 SceneSegmentation segment_scene(const PointList& points, const GridLayout& grid, const config::SegmentConfig& cfg,
                                 parallel::ThreadPool* pool = nullptr);
 

@@ -220,6 +220,32 @@ TEST_F(BenchScenes, UnorganizedDropsEachScenesGrid) {
   EXPECT_EQ(all.at("false_objects"), 0);
 }
 
+// --voxel: the two frames thinned to 3 mm voxel centroids (labelled as most of their points), as
+// a robot's pipeline often passes a frame on: unorganized, no pixel grid left, seen from the camera
+// at the origin (segment_scene's camera view); 6 of the 7 objects named right (a can as a box).
+TEST_F(BenchScenes, VoxelThinsEachSceneToCentroids) {
+  const fs::path learn = testing::shared_data_path("real/mosd_learn");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
+  const fs::path d = two_mosd_frames(learn, "voxel");
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json", "--voxel", "0.003"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  EXPECT_DOUBLE_EQ(out.at("settings").at("voxel").get<double>(), 0.003);
+  for (const auto& scene : out.at("scenes")) {
+    EXPECT_EQ(scene.at("organized"), false) << scene.at("file");
+    EXPECT_LT(scene.at("points").get<int>(), 100000)
+        << scene.at("file");  // 83 370 and 91 620 of 182 292 and 199 001
+  }
+  const Json& all = out.at("rows").back();
+  EXPECT_EQ(all.at("objects"), 7);
+  EXPECT_GE(all.at("right").get<int>(), 6);
+  EXPECT_EQ(all.at("false_objects"), 0);
+  const auto negative = run_process({kBin, "--scenes", d.string(), "--voxel", "0"});
+  EXPECT_NE(negative.exit_code, 0);
+  EXPECT_NE(negative.err.find("--voxel"), std::string::npos) << negative.err;
+}
+
 // The scene gate: all 45 labelled Kinect frames of mosd_learn, per category, floors a few
 // points under docs/performance.md's table (cloudshape-bench --scenes): objects named right,
 // segmentation overlap, false objects and duplicates per scene. About 5 s.

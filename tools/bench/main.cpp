@@ -6,7 +6,7 @@
 //                    [--seed S] [--config FILE] [--json] [--per-cloud] [--save-clouds DIR]
 //                    (how right it is: see accuracy.hpp)
 //   cloudshape-bench --scenes DIR [--truth FILE] [--json] [--per-scene] [--config FILE]
-//                    [--jitter SHARE [--jitter-runs R]] [--unorganized]
+//                    [--jitter SHARE [--jitter-runs R]] [--unorganized] [--voxel SIZE]
 //                    (labelled real or synthetic scenes: see scene_bench.hpp)
 //   cloudshape-bench --pool [--threads N] [--json]
 //                    (what a parallel run costs on the thread pool: see pool_bench.hpp)
@@ -194,6 +194,11 @@ int main(int argc, char** argv) {
       "--unorganized", scenes.unorganized,
       "--scenes: drop each scene's pixel grid first (the same points unorganized, as a PLY "
       "or XYZ export of the frame has them)");
+  app.add_option(
+         "--voxel", scenes.voxel,
+         "--scenes: downsample each scene to voxel centroids of this size first (each labelled as "
+         "most of its points; unorganized), as a pipeline often thins a frame")
+      ->check(CLI::PositiveNumber);
   bool pool_bench = false;
   app.add_flag(
          "--pool", pool_bench,

@@ -10,8 +10,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <random>
+#include <unordered_map>
 
 #include "geometry/voxel_grid.hpp"
 #include "io/cloud_reader.hpp"
@@ -109,14 +111,55 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-// The scene's cloud, which must carry its labels; without its pixel grid when `unorganized`.
-io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized) {
+// The centroids of the occupied voxels of edge `size` (in first-point order), each labelled as
+// most of its points (the smaller label on a tie): an unorganized cloud.
+io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size) {
+  struct Voxel {
+    Point sum = Point::Zero();
+    std::size_t count = 0;
+    std::map<std::uint32_t, std::size_t> labels;
+  };
+  std::unordered_map<std::uint64_t, std::size_t> index;
+  std::vector<Voxel> voxels;
+  const Point origin = geometry::bounding_box(cloud.points).min;
+  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+    const Eigen::Vector3d c = ((cloud.points[i] - origin) / size).array().floor();
+    const auto key = (static_cast<std::uint64_t>(c.x()) << 42) |
+                     (static_cast<std::uint64_t>(c.y()) << 21) | static_cast<std::uint64_t>(c.z());
+    const auto [at, fresh] = index.emplace(key, voxels.size());
+    if (fresh) voxels.emplace_back();
+    Voxel& v = voxels[at->second];
+    v.sum += cloud.points[i];
+    ++v.count;
+    ++v.labels[cloud.labels[i]];
+  }
+  io::CloudFile out;
+  out.format = cloud.format;
+  for (const Voxel& v : voxels) {
+    out.points.push_back(v.sum / static_cast<double>(v.count));
+    out.labels.push_back(
+        std::max_element(v.labels.begin(), v.labels.end(), [](const auto& a, const auto& b) {
+          return a.second < b.second;
+        })->first);
+  }
+  return out;
+}
+
+// The scene's cloud, which must carry its labels; without its pixel grid when `unorganized`,
+// downsampled to voxel centroids of edge `voxel` when that is positive.
+io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized, double voxel) {
   io::CloudFile cloud = read_scene(scene.path);
   if (cloud.labels.empty())
     throw InputError{scene.path.string() +
                      ": no label field, but the truth lists it as a labelled scene"};
   if (unorganized) cloud.grid = GridLayout{};
-  return cloud;
+  if (!(voxel > 0.0)) return cloud;
+  const geometry::Bounds box = geometry::bounding_box(cloud.points);
+  // 21 bits a coordinate for a voxel's key.
+  if (!((box.max - box.min).maxCoeff() / voxel < 2.0e6))
+    throw InputError{scene.path.string() + ": --voxel " + std::to_string(voxel) +
+                     " is too small for its extent"};
+  return voxel_centroids(cloud, voxel);
 }
 
 // Every coordinate moved by Gaussian noise of `sigma` (none for a cloud of no spacing).
@@ -208,7 +251,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
-    const io::CloudFile cloud = read_labelled_scene(scenes[k], options.unorganized);
+    const io::CloudFile cloud = read_labelled_scene(scenes[k], options.unorganized, options.voxel);
     if (!(options.jitter > 0.0)) {
       runs.push_back(run_scene(scenes[k], cloud, cfg, options.pool));
       continue;
@@ -239,6 +282,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     settings["jitter"] = options.jitter;
     settings["jitter_runs"] = options.jitter > 0.0 ? options.jitter_runs : 1;
     settings["unorganized"] = options.unorganized;
+    settings["voxel"] = options.voxel;
     std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
   } else {
     print_scene_table(rows, stdout);

@@ -29,6 +29,10 @@ struct SceneOptions {
   // --unorganized: each scene's pixel grid dropped before it is recognised, as an export of the
   // same frame to PLY or XYZ drops it (the same points, in the same order).
   bool unorganized = false;
+  // --voxel SIZE: each scene downsampled to the centroids of voxels of SIZE (its units), each
+  // labelled as most of its points, as a robot's pipeline often thins a frame before passing it
+  // on (an unorganized cloud); 0: as read.
+  double voxel = 0.0;
 };
 
 // Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,
