@@ -57,12 +57,11 @@ std::optional<GridLayout> pinhole_grid(const PointList& points) {
   // memory, and most end in the first pass (a point at or behind the camera's plane).
   const auto a = [&points](std::size_t i) { return points[i].x() / points[i].z(); };
   const auto b = [&points](std::size_t i) { return points[i].y() / points[i].z(); };
-  double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
   // The camera looks along +z (drivers, ROS optical frames) or -z (a flip for display, as
-  // OpenGL's convention has it): every point on one side of its plane.
-  const bool ahead = points[0].z() > 0.0;
+  // OpenGL's convention has it).
+  if (!beyond_camera_plane(points)) return std::nullopt;
+  double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
   for (std::size_t i = 0; i < n; ++i) {
-    if (!(ahead ? points[i].z() > 0.0 : points[i].z() < 0.0)) return std::nullopt;
     a_lo = std::min(a_lo, a(i));
     a_hi = std::max(a_hi, a(i));
     b_lo = std::min(b_lo, b(i));
@@ -108,6 +107,13 @@ std::optional<GridLayout> pinhole_grid(const PointList& points) {
     previous = pixel;
   }
   return grid;
+}
+
+bool beyond_camera_plane(const PointList& points) {
+  if (points.empty()) return false;
+  const bool ahead = points.front().z() > 0.0;
+  return std::all_of(points.begin(), points.end(),
+                     [ahead](const Point& p) { return ahead ? p.z() > 0.0 : p.z() < 0.0; });
 }
 
 }  // namespace cloudshape::segment

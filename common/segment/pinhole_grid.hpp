@@ -17,4 +17,8 @@ namespace cloudshape::segment {
 // within the first pass. A few passes over the points, no copy of them.
 std::optional<GridLayout> pinhole_grid(const PointList& points);
 
+// Whether there are points and every one lies on one side of the plane z = 0, none on it: a
+// camera at the origin looking along +z (or -z) has them all in front of it.
+bool beyond_camera_plane(const PointList& points);
+
 }  // namespace cloudshape::segment

@@ -103,15 +103,9 @@ std::optional<std::vector<std::vector<std::uint32_t>>> at_own_resolution(
 // the points' extent off it (a camera looks down at a table from well above it; a scene written in
 // a world frame has its origin on its floor or table, or nowhere near a view of it).
 bool seen_by_camera(const PointList& points, const std::vector<StructurePlane>& structure) {
-  if (structure.empty() || points.empty()) return false;
-  const bool ahead = points.front().z() > 0.0;
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(INFINITY), hi = -lo;
-  for (const Point& p : points) {
-    if (!(ahead ? p.z() > 0.0 : p.z() < 0.0)) return false;
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return structure.front().plane.signed_distance(Point::Zero()) >= 0.25 * (hi - lo).norm();
+  if (structure.empty() || !beyond_camera_plane(points)) return false;
+  return structure.front().plane.signed_distance(Point::Zero()) >=
+         0.25 * geometry::bounding_box(points).diagonal();
 }
 
 // One object holding all the points but fewer than cfg.min_object_nodes of them: so few points

@@ -111,9 +111,10 @@ double cpu_ms_now() {
   return 1e3 * static_cast<double>(ts.tv_sec) + 1e-6 * static_cast<double>(ts.tv_nsec);
 }
 
-// The centroids of the occupied voxels of edge `size` (in first-point order), each labelled as
-// most of its points (the smaller label on a tie): an unorganized cloud.
-io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size) {
+// The centroids of the occupied voxels of edge `size` from `origin` (the points' smallest
+// corner), in first-point order, each labelled as most of its points (the smaller label on a
+// tie): an unorganized cloud.
+io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size, const Point& origin) {
   struct Voxel {
     Point sum = Point::Zero();
     std::size_t count = 0;
@@ -121,7 +122,6 @@ io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size) {
   };
   std::unordered_map<std::uint64_t, std::size_t> index;
   std::vector<Voxel> voxels;
-  const Point origin = geometry::bounding_box(cloud.points).min;
   for (std::size_t i = 0; i < cloud.points.size(); ++i) {
     const Eigen::Vector3d c = ((cloud.points[i] - origin) / size).array().floor();
     const auto key = (static_cast<std::uint64_t>(c.x()) << 42) |
@@ -159,7 +159,7 @@ io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized, double v
   if (!((box.max - box.min).maxCoeff() / voxel < 2.0e6))
     throw InputError{scene.path.string() + ": --voxel " + std::to_string(voxel) +
                      " is too small for its extent"};
-  return voxel_centroids(cloud, voxel);
+  return voxel_centroids(cloud, voxel, box.min);
 }
 
 // Every coordinate moved by Gaussian noise of `sigma` (none for a cloud of no spacing).
@@ -194,8 +194,7 @@ SceneRun run_scene(const Scene& scene, const io::CloudFile& cloud,
   std::vector<ReportedObject> reported;
   for (const auto& o : result.objects) {
     reported.push_back(reported_object(o));
-    run.reported_shapes.push_back(o.shape);
-    run.reported_confidences.push_back(o.confidence);
+    run.reported.push_back({o.shape, o.confidence});
   }
   try {
     run.score = score_scene(cloud.points, cloud.labels, truth, reported);

@@ -142,7 +142,7 @@ void print_scene_lines(const std::vector<SceneRun>& runs, std::FILE* out) {
     std::string reports;
     for (std::size_t k = 0; k < r.score.reports.size(); ++k) {
       const ReportScore& s = r.score.reports[k];
-      reports += " " + r.reported_shapes[k] + "->" + to_string(s.kind) +
+      reports += " " + r.reported[k].shape + "->" + to_string(s.kind) +
                  (s.label != 0 ? "@" + std::to_string(s.label) : "");
     }
     std::fprintf(out, "%-14s %-14s %6.0f ms  labelled:%s  reported:%s\n", r.file.c_str(),
@@ -184,8 +184,8 @@ nlohmann::ordered_json scenes_json(const std::vector<SceneRun>& runs,
     for (std::size_t k = 0; k < r.score.reports.size(); ++k) {
       const ReportScore& s = r.score.reports[k];
       nlohmann::ordered_json rj;
-      rj["shape"] = r.reported_shapes[k];
-      if (k < r.reported_confidences.size()) rj["confidence"] = r.reported_confidences[k];
+      rj["shape"] = r.reported[k].shape;
+      rj["confidence"] = r.reported[k].confidence;
       rj["kind"] = to_string(s.kind);
       rj["label"] =
           s.label != 0 ? nlohmann::ordered_json(s.label) : nlohmann::ordered_json(nullptr);

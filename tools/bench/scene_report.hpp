@@ -20,8 +20,11 @@ struct SceneRun {
   std::string truth;       // the truth file or sidecar its expected shapes came from
   std::size_t points = 0;  // finite points given to recognize_cloud
   bool organized = false;
-  std::vector<std::string> reported_shapes;  // per reported object, in its order
-  std::vector<double> reported_confidences;  // the same objects' confidences
+  struct Report {
+    std::string shape;
+    double confidence = 0.0;
+  };
+  std::vector<Report> reported;  // per reported object, in its order
   SceneScore score;
   double wall_ms = 0.0;   // wall clock around recognize_cloud
   double total_ms = 0.0;  // the result's own timings.total_ms
