@@ -29,6 +29,15 @@ FittedSolid make_cone(const Point& centre, const Eigen::Vector3d& axis, double r
   return out;
 }
 
+// Where the key-points say polyhedron (a box, tetrahedron or prism corner count), the cone is
+// only a rival hypothesis: the fits that need the cloud's normals are not worth computing.
+bool polyhedron_class(const SolveInput& in) {
+  const auto& classes = in.classification.candidates;
+  return !classes.empty() &&
+         (classes.front() == Shape::box || classes.front() == Shape::tetrahedron ||
+          classes.front() == Shape::pentagonal_prism);
+}
+
 // A cone whose base is not seen (a single view, the base on the table). Every tangent
 // plane of a cone passes through its apex, so the apex is the least-squares meeting point of
 // the local tangent planes; seen from the apex, every surface point lies at the same angle
@@ -95,6 +104,18 @@ std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const Detected
   return make_cone(side->centre, side->axis, side->radius, side->radius / side->slope);
 }
 
+// How near the points come to the cone's apex.
+double nearest_to_apex(const SolveInput& in, const FittedSolid& cone) {
+  const Point apex = cone.center + cone.dimensions[1].second * cone.axes.row(0).transpose();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Point& p : in.cloud) nearest = std::min(nearest, (p - apex).norm());
+  return nearest;
+}
+
+double slant_height(const FittedSolid& cone) {
+  return std::hypot(cone.dimensions[0].second, cone.dimensions[1].second);
+}
+
 // A cone cut short: no point comes within solve.apex_gap of the slant height of its apex, while
 // the highest points ring the axis all round (a cut's rim; a cone seen from below shows only
 // part of its silhouette there, a complete one its tip); or none within solve.cone_tip_gap,
@@ -102,15 +123,12 @@ std::optional<FittedSolid> fit_cone_on_base(const SolveInput& in, const Detected
 // at part of its smaller rim.
 bool cut_short(const SolveInput& in, const FittedSolid& cone) {
   const Eigen::Vector3d axis = cone.axes.row(0).transpose();
-  const double radius = cone.dimensions[0].second, height = cone.dimensions[1].second;
-  const Point apex = cone.center + height * axis;
-  double nearest = std::numeric_limits<double>::infinity(), top = -nearest;
-  for (const Point& p : in.cloud) {
-    nearest = std::min(nearest, (p - apex).norm());
-    top = std::max(top, (p - cone.center).dot(axis));
-  }
-  if (nearest > in.cfg.cone_tip_gap * std::hypot(radius, height)) return true;
-  if (nearest <= in.cfg.apex_gap * std::hypot(radius, height)) return false;
+  const double height = cone.dimensions[1].second;
+  const double nearest = nearest_to_apex(in, cone);
+  if (nearest > in.cfg.cone_tip_gap * slant_height(cone)) return true;
+  if (nearest <= in.cfg.apex_gap * slant_height(cone)) return false;
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Point& p : in.cloud) top = std::max(top, (p - cone.center).dot(axis));
   const Eigen::Matrix3d frame = cone.axes;
   std::array<bool, 12> sector{};
   const double slab = std::max(in.cfg.face_slab * height, 2.0 * in.resolution);
@@ -135,16 +153,28 @@ std::optional<FittedSolid> fit_cone_any(const SolveInput& in) {
   if (on_base && !detail::plausible(*on_base, 2.0 * in.keypoints.reference.radius, in.cfg.max_size_ratio))
     on_base.reset();
   const double on_base_share = on_base ? detail::explained_share(in, *on_base) : 0.0;
-  // Where the key-points say polyhedron (a box, tetrahedron or prism corner count), the cone
-  // is only a rival hypothesis: the normals the base-free fit needs are not worth computing.
-  const auto& classes = in.classification.candidates;
-  const bool polyhedron = !classes.empty() && (classes.front() == Shape::box ||
-                                               classes.front() == Shape::tetrahedron ||
-                                               classes.front() == Shape::pentagonal_prism);
-  if (polyhedron || (on_base && on_base_share >= in.cfg.min_inlier_fraction)) return on_base;
+  if (polyhedron_class(in) || (on_base && on_base_share >= in.cfg.min_inlier_fraction))
+    return on_base;
   std::optional<FittedSolid> free = fit_cone_without_base(in);
   if (!on_base || !free) return on_base ? on_base : free;
   return detail::explained_share(in, *free) > on_base_share ? free : on_base;
+}
+
+// The cone on the tapered side fitted to the points alone: its apex where the side's radius comes
+// to nothing, its base where the points end at the wide end.
+std::optional<FittedSolid> cone_on_side(const SolveInput& in) {
+  const auto& side = in.side_cone();
+  if (!side || side->cone.slope == 0.0) return std::nullopt;
+  const detail::SideCone& c = side->cone;
+  const double r_lo = c.radius + c.slope * side->lo, r_hi = c.radius + c.slope * side->hi;
+  const bool wide_at_lo = r_lo >= r_hi;
+  const double base = wide_at_lo ? side->lo : side->hi;
+  const double radius = std::max(r_lo, r_hi);
+  // Heights grow towards the apex from the base.
+  const double height = (wide_at_lo ? 1.0 : -1.0) * (-c.radius / c.slope - base);
+  if (!(radius > 0.0) || !(height > 0.0)) return std::nullopt;
+  return make_cone(c.on_axis + base * c.axis, wide_at_lo ? c.axis : Eigen::Vector3d(-c.axis),
+                   radius, height);
 }
 
 }  // namespace
@@ -154,6 +184,17 @@ std::optional<FittedSolid> detail::cone_without_base(const SolveInput& in) { ret
 std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   auto cone = fit_cone_any(in);
   if (cone && cut_short(in, *cone)) return std::nullopt;
+  return cone;
+}
+
+std::optional<FittedSolid> fit_cone_from_side(const SolveInput& in) {
+  if (polyhedron_class(in)) return std::nullopt;
+  auto cone = cone_on_side(in);
+  if (!cone ||
+      !detail::plausible(*cone, 2.0 * in.keypoints.reference.radius, in.cfg.max_size_ratio) ||
+      nearest_to_apex(in, *cone) > in.cfg.apex_gap * slant_height(*cone) ||
+      detail::explained_share(in, *cone) < in.cfg.side_fit_min_inlier_fraction)
+    return std::nullopt;
   return cone;
 }
 

@@ -38,10 +38,59 @@ bool frustum_radii(const SolveInput& in, double radius, double top_radius) {
   return top_radius > in.cfg.frustum_min_top_share * radius && radius - top_radius > in.cfg.frustum_min_taper * radius;
 }
 
-// No rim's face seen (a single view of the side alone): the side's axis from its normals, then
-// axis, axis point, radius and taper refined together on the side points; the ends where the
-// points end along the axis.
+// No rim's face seen (a single view of the side alone): the side fitted to the points alone
+// (SolveInput::side_cone), its ends where the points end along the axis.
 std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
+  const auto& side = in.side_cone();
+  if (!side) return std::nullopt;
+  const detail::SideCone& cone = side->cone;
+  const double r_lo = cone.radius + cone.slope * side->lo,
+               r_hi = cone.radius + cone.slope * side->hi;
+  const double radius = std::max(r_lo, r_hi), top_radius = std::min(r_lo, r_hi);
+  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
+  const double height = side->hi - side->lo;
+  FittedSolid out = r_lo >= r_hi ? make_frustum(cone.on_axis + side->lo * cone.axis, cone.axis,
+                                                radius, top_radius, height)
+                                 : make_frustum(cone.on_axis + side->hi * cone.axis, -cone.axis,
+                                                radius, top_radius, height);
+  // Free of any face, the fit has the second chance's freedom and must clear its bar.
+  if (detail::explained_share(in, out) < in.cfg.side_fit_min_inlier_fraction) return std::nullopt;
+  return out;
+}
+
+std::optional<FittedSolid> fit_frustum_on_cap(const SolveInput& in) {
+  const auto faces = detail::faces_by_size(in.planes);
+  if (faces.empty()) return std::nullopt;
+  const DetectedPlane* cap =
+      in.classification.cap_plane ? &in.planes.planes[*in.classification.cap_plane] : faces[0];
+  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
+  const DetectedPlane* other = nullptr;
+  for (const DetectedPlane* f : faces)
+    if (f->plane.normal.dot(cap->plane.normal) < -cos_parallel) {
+      other = f;
+      break;
+    }
+  std::vector<const DetectedPlane*> flat{cap};
+  if (other) flat.push_back(other);
+  const auto side = detail::fit_conical_side(in, *cap, flat);
+  if (!side) return std::nullopt;
+  // The far end: the other cap where it is seen, else where the side's points end.
+  const double far =
+      other ? detail::face_position(in.cloud, *other, side->axis) - side->centre.dot(side->axis)
+            : side->top;
+  if (!(far > 0.0)) return std::nullopt;
+  const double near_radius = side->radius, far_radius = side->radius - side->slope * far;
+  const double radius = std::max(near_radius, far_radius),
+               top_radius = std::min(near_radius, far_radius);
+  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
+  if (near_radius >= far_radius)
+    return make_frustum(side->centre, side->axis, radius, top_radius, far);
+  return make_frustum(side->centre + far * side->axis, -side->axis, radius, top_radius, far);
+}
+
+// The side's axis from its normals, then axis, axis point, radius and taper refined together on
+// the side points; the ends where the points end along the axis.
+std::optional<detail::SideConeExtent> fit_side_cone(const SolveInput& in) {
   const auto& samples = in.cloud_normals();
   if (samples.size() < 20) return std::nullopt;
   std::vector<std::uint32_t> side(in.cloud.size());
@@ -99,44 +148,15 @@ std::optional<FittedSolid> fit_frustum_from_side(const SolveInput& in) {
   int filled = 0;
   for (std::size_t n : per_stretch) filled += static_cast<double>(n) >= 0.005 * static_cast<double>(in.cloud.size());
   if (filled < in.cfg.frustum_side_fill * kStretches) return std::nullopt;
-  const double r_lo = cone->radius + cone->slope * lo, r_hi = cone->radius + cone->slope * hi;
-  const double radius = std::max(r_lo, r_hi), top_radius = std::min(r_lo, r_hi);
-  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
-  FittedSolid out = r_lo >= r_hi
-                        ? make_frustum(cone->on_axis + lo * cone->axis, cone->axis, radius, top_radius, hi - lo)
-                        : make_frustum(cone->on_axis + hi * cone->axis, -cone->axis, radius, top_radius, hi - lo);
-  // Free of any face, the fit has the second chance's freedom and must clear its bar.
-  if (detail::explained_share(in, out) < in.cfg.side_fit_min_inlier_fraction) return std::nullopt;
-  return out;
-}
-
-std::optional<FittedSolid> fit_frustum_on_cap(const SolveInput& in) {
-  const auto faces = detail::faces_by_size(in.planes);
-  if (faces.empty()) return std::nullopt;
-  const DetectedPlane* cap = in.classification.cap_plane ? &in.planes.planes[*in.classification.cap_plane] : faces[0];
-  const double cos_parallel = std::cos(in.cfg.parallel_degrees * kPi / 180.0);
-  const DetectedPlane* other = nullptr;
-  for (const DetectedPlane* f : faces)
-    if (f->plane.normal.dot(cap->plane.normal) < -cos_parallel) {
-      other = f;
-      break;
-    }
-  std::vector<const DetectedPlane*> flat{cap};
-  if (other) flat.push_back(other);
-  const auto side = detail::fit_conical_side(in, *cap, flat);
-  if (!side) return std::nullopt;
-  // The far end: the other cap where it is seen, else where the side's points end.
-  const double far = other ? detail::face_position(in.cloud, *other, side->axis) - side->centre.dot(side->axis)
-                           : side->top;
-  if (!(far > 0.0)) return std::nullopt;
-  const double near_radius = side->radius, far_radius = side->radius - side->slope * far;
-  const double radius = std::max(near_radius, far_radius), top_radius = std::min(near_radius, far_radius);
-  if (!frustum_radii(in, radius, top_radius)) return std::nullopt;
-  if (near_radius >= far_radius) return make_frustum(side->centre, side->axis, radius, top_radius, far);
-  return make_frustum(side->centre + far * side->axis, -side->axis, radius, top_radius, far);
+  return detail::SideConeExtent{*cone, lo, hi};
 }
 
 }  // namespace
+
+const std::optional<detail::SideConeExtent>& SolveInput::side_cone() const {
+  std::call_once(side_cone_once_, [this] { side_cone_ = fit_side_cone(*this); });
+  return side_cone_;
+}
 
 std::optional<FittedSolid> fit_frustum(const SolveInput& in) {
   // The largest flat face may be a flat-looking strip of the side, taken for a rim's face: the

@@ -11,6 +11,7 @@
 
 #include "config/stage_configs.hpp"
 #include "pipeline/classify.hpp"
+#include "pipeline/cylinder_refine.hpp"
 #include "pipeline/keypoints.hpp"
 #include "pipeline/planes.hpp"
 #include "pipeline/shape.hpp"
@@ -21,6 +22,14 @@ namespace detail {
 struct SurfaceSample {
   Point at = Point::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // unit, sign arbitrary
+};
+
+// A straight tapered side fitted to the points alone, free of any face, and where the points end
+// along its axis (heights `lo` < `hi` from cone.on_axis, a five-hundredth of the points trimmed
+// at each end): a frustum's side, or a cone's whose apex its normals place badly under noise.
+struct SideConeExtent {
+  SideCone cone;
+  double lo = 0.0, hi = 0.0;
 };
 }  // namespace detail
 
@@ -72,11 +81,17 @@ struct SolveInput {
   // fit starts from it and the solver's second chance is it, on the same input.
   const std::optional<FittedSolid>& side_normals_cylinder() const;
 
+  // The tapered side fitted to the points alone (detail::SideConeExtent), on first use: the
+  // frustum's side, and the cone's where no face or apex from normals explains the points.
+  const std::optional<detail::SideConeExtent>& side_cone() const;
+
  private:
   mutable std::once_flag normals_once_;
   mutable std::vector<detail::SurfaceSample> normals_;
   mutable std::once_flag side_normals_cylinder_once_;
   mutable std::optional<FittedSolid> side_normals_cylinder_;
+  mutable std::once_flag side_cone_once_;
+  mutable std::optional<detail::SideConeExtent> side_cone_;
 };
 
 std::optional<FittedSolid> fit_box(const SolveInput& in);
@@ -91,6 +106,13 @@ std::optional<FittedSolid> fit_cylinder(const SolveInput& in);
 // break into strips flat enough to pass for faces, and the largest then poses as a cap.
 std::optional<FittedSolid> fit_cylinder_from_side_normals(const SolveInput& in);
 std::optional<FittedSolid> fit_cone(const SolveInput& in);
+// The cone on the tapered side fitted to the points alone (SolveInput::side_cone), closed at the
+// apex its radius comes to: where the points reach within solve.apex_gap of that apex (a
+// frustum's side or a prism's few lidar rings fit a taper too, but stop short of where it would
+// end) and it explains solve.side_fit_min_inlier_fraction of them, as the second chance must; not
+// where the key-points say polyhedron. Under a depth camera's noise a small cone's tangent planes
+// meet far from its apex (fit_cone's base-free fit); the side's own fit weighs every point.
+std::optional<FittedSolid> fit_cone_from_side(const SolveInput& in);
 std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
 // A truncated cone from a cap and its straight side; only where the taper is real
 // (solve.frustum_min_taper) and the smaller end not a point.

@@ -252,13 +252,31 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     solid_of[others[begin]] = fit_solid(candidates[others[begin]], input);
   });
   for (std::size_t i : others) admit(i, solid_of[i]);
-  for (std::size_t i = 0; i < candidates.size(); ++i) {
-    if (candidates[i] != Shape::frustum) continue;
+  const auto explained_by_fits = [&] {
     std::vector<double> explained;
     for (const auto& f : fit_of) {
       if (f) explained.push_back(f->second.explained);
     }
-    if (!detail::frustum_may_matter(explained, cfg.preferred_margin)) continue;
+    return explained;
+  };
+  // A cone whose fits explain less than the second chance must gets its side fitted to the points
+  // alone (fit_cone_from_side), where that can change the choice as the frustum's must: the side
+  // fit costs as much as the frustum's, which then shares it.
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i] != Shape::cone) continue;
+    const double cone_share = fit_of[i] ? fit_of[i]->second.explained : 0.0;
+    if (cone_share >= cfg.side_fit_min_inlier_fraction ||
+        !detail::frustum_may_matter(explained_by_fits(), cfg.preferred_margin))
+      continue;
+    std::optional<FittedSolid> from_side = fit_cone_from_side(input);
+    if (!admissible(from_side)) continue;
+    const Verification v =
+        verify(cloud, *from_side, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    if (v.explained > cone_share) fit_of[i].emplace(std::move(*from_side), v);
+  }
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (candidates[i] != Shape::frustum) continue;
+    if (!detail::frustum_may_matter(explained_by_fits(), cfg.preferred_margin)) continue;
     solid_of[i] = fit_solid(candidates[i], input);
     admit(i, solid_of[i]);
   }
