@@ -188,7 +188,6 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
 }
 
 std::optional<FittedSolid> fit_cone_from_side(const SolveInput& in) {
-  if (polyhedron_class(in)) return std::nullopt;
   auto cone = cone_on_side(in);
   if (!cone ||
       !detail::plausible(*cone, 2.0 * in.keypoints.reference.radius, in.cfg.max_size_ratio) ||

@@ -109,9 +109,10 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in);
 // The cone on the tapered side fitted to the points alone (SolveInput::side_cone), closed at the
 // apex its radius comes to: where the points reach within solve.apex_gap of that apex (a
 // frustum's side or a prism's few lidar rings fit a taper too, but stop short of where it would
-// end) and it explains solve.side_fit_min_inlier_fraction of them, as the second chance must; not
-// where the key-points say polyhedron. Under a depth camera's noise a small cone's tangent planes
-// meet far from its apex (fit_cone's base-free fit); the side's own fit weighs every point.
+// end) and it explains solve.side_fit_min_inlier_fraction of them, as the second chance must.
+// Under a depth camera's noise a small cone's tangent planes meet far from its apex (fit_cone's
+// base-free fit), and its noisy rim can pass for a polyhedron's corners; the side's own fit
+// weighs every point.
 std::optional<FittedSolid> fit_cone_from_side(const SolveInput& in);
 std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
 // A truncated cone from a cap and its straight side; only where the taper is real
