@@ -246,6 +246,40 @@ TEST_F(BenchScenes, VoxelThinsEachSceneToCentroids) {
   EXPECT_NE(negative.err.find("--voxel"), std::string::npos) << negative.err;
 }
 
+// --decimate 2: the two frames as a camera run at 320 x 240 gives them (every other pixel of
+// every other row, on a grid half as wide and high): still organized, a quarter of the points
+// (45 537 and 49 752 of 182 292 and 199 001), and the same 7 objects named right.
+TEST_F(BenchScenes, DecimateKeepsEveryNthPixelOnASmallerGrid) {
+  const fs::path learn = testing::shared_data_path("real/mosd_learn");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn0.pcd");
+  CLOUDSHAPE_REQUIRE_SHARED_DATA(learn / "learn33.pcd");
+  const fs::path d = two_mosd_frames(learn, "decimate");
+  const auto run = run_process({kBin, "--scenes", d.string(), "--json", "--decimate", "2"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Json out = Json::parse(run.out);
+  EXPECT_EQ(out.at("settings").at("decimate"), 2);
+  for (const auto& scene : out.at("scenes")) {
+    EXPECT_EQ(scene.at("organized"), true) << scene.at("file");
+    EXPECT_LT(scene.at("points").get<int>(), 55000) << scene.at("file");
+    EXPECT_GT(scene.at("points").get<int>(), 40000) << scene.at("file");
+  }
+  const Json& all = out.at("rows").back();
+  EXPECT_EQ(all.at("objects"), 7);
+  EXPECT_EQ(all.at("right"), 7);
+  EXPECT_EQ(all.at("false_objects"), 0);
+  // A scene without a pixel grid has no pixels to keep: a one-line error naming it.
+  const fs::path plain = sub("decimate_unorganized");
+  const std::vector<Labelled> scene = box_on_table();
+  write_labelled_pcd(plain / "box_on_table.pcd", scene);
+  std::ofstream(plain / "box_on_table.truth.json")
+      << R"({"category": "box_on_table", "groups": {"20": "box"}})";
+  const auto refused = run_process({kBin, "--scenes", plain.string(), "--decimate", "2"});
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("box_on_table.pcd: --decimate 2 needs an organized scene"),
+            std::string::npos)
+      << refused.err;
+}
+
 // The scene gate: all 45 labelled Kinect frames of mosd_learn, per category, floors a few
 // points under docs/performance.md's table (cloudshape-bench --scenes): objects named right,
 // segmentation overlap, false objects and duplicates per scene. About 5 s.

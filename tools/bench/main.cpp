@@ -199,6 +199,12 @@ int main(int argc, char** argv) {
          "--scenes: downsample each scene to voxel centroids of this size first (each labelled as "
          "most of its points; unorganized), as a pipeline often thins a frame")
       ->check(CLI::PositiveNumber);
+  app.add_option(
+         "--decimate", scenes.decimate,
+         "--scenes: keep every N-th pixel of every N-th row of each organized scene (its grid "
+         "N times smaller each way: 2 makes 320 x 240 of 640 x 480), as a camera run at a "
+         "lower resolution gives")
+      ->check(CLI::Range(1, 16));
   bool pool_bench = false;
   app.add_flag(
          "--pool", pool_bench,

@@ -145,13 +145,41 @@ io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size, const Poi
   return out;
 }
 
-// The scene's cloud, which must carry its labels; without its pixel grid when `unorganized`,
-// downsampled to voxel centroids of edge `voxel` when that is positive.
-io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized, double voxel) {
+// Of an organized cloud, the points on every `step`-th pixel of every `step`-th row, in their
+// order, on the grid `step` times smaller each way (a camera's frame at a lower resolution).
+io::CloudFile decimated(const io::CloudFile& cloud, std::size_t step) {
+  io::CloudFile out;
+  out.format = cloud.format;
+  const std::size_t width = cloud.grid.width;
+  out.grid.width = (width + step - 1) / step;
+  out.grid.height = (cloud.grid.height + step - 1) / step;
+  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
+    const std::size_t row = cloud.grid.pixel[i] / width, column = cloud.grid.pixel[i] % width;
+    if (row % step != 0 || column % step != 0) continue;
+    out.points.push_back(cloud.points[i]);
+    out.labels.push_back(cloud.labels[i]);
+    out.grid.pixel.push_back(
+        static_cast<std::uint32_t>(row / step * out.grid.width + column / step));
+  }
+  return out;
+}
+
+// The scene's cloud, which must carry its labels; on every `decimate`-th pixel and row of its
+// grid when that is above 1; without its pixel grid when `unorganized`, downsampled to voxel
+// centroids of edge `voxel` when that is positive.
+io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized, double voxel,
+                                  int decimate) {
   io::CloudFile cloud = read_scene(scene.path);
   if (cloud.labels.empty())
     throw InputError{scene.path.string() +
                      ": no label field, but the truth lists it as a labelled scene"};
+  if (decimate > 1) {
+    if (!cloud.grid.organized())
+      throw InputError{
+          scene.path.string() + ": --decimate " + std::to_string(decimate) +
+          " needs an organized scene (a PCD of HEIGHT > 1), and this one has no pixel grid"};
+    cloud = decimated(cloud, static_cast<std::size_t>(decimate));
+  }
   if (unorganized) cloud.grid = GridLayout{};
   if (!(voxel > 0.0)) return cloud;
   const geometry::Bounds box = geometry::bounding_box(cloud.points);
@@ -250,7 +278,8 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     if (progress)
       std::fprintf(stderr, "\rcloudshape-bench: scene %zu/%zu %-24s", k + 1, scenes.size(),
                    scenes[k].path.filename().string().c_str());
-    const io::CloudFile cloud = read_labelled_scene(scenes[k], options.unorganized, options.voxel);
+    const io::CloudFile cloud =
+        read_labelled_scene(scenes[k], options.unorganized, options.voxel, options.decimate);
     if (!(options.jitter > 0.0)) {
       runs.push_back(run_scene(scenes[k], cloud, cfg, options.pool));
       continue;
@@ -282,6 +311,7 @@ int run(const SceneOptions& options, const config::PipelineConfig& cfg) {
     settings["jitter_runs"] = options.jitter > 0.0 ? options.jitter_runs : 1;
     settings["unorganized"] = options.unorganized;
     settings["voxel"] = options.voxel;
+    settings["decimate"] = options.decimate;
     std::cout << scenes_json(runs, rows, settings).dump(2) << std::endl;
   } else {
     print_scene_table(rows, stdout);

@@ -33,6 +33,10 @@ struct SceneOptions {
   // labelled as most of its points, as a robot's pipeline often thins a frame before passing it
   // on (an unorganized cloud); 0: as read.
   double voxel = 0.0;
+  // --decimate N: of an organized scene, every N-th pixel of every N-th row kept, on a grid N
+  // times smaller each way: the frame a camera run at a lower resolution gives (2: 320 x 240 from
+  // 640 x 480), as robots often run one for speed; 1: as read.
+  int decimate = 1;
 };
 
 // Prints the table (or JSON) on stdout, progress on stderr when it is a terminal. Returns 0,
