@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 #include "config/pipeline_config.hpp"
 #include "pipeline/recognize.hpp"
@@ -15,6 +16,33 @@
 
 namespace cloudshape {
 namespace {
+
+// A generated frame of three solids as the recogniser takes it: its finite points on their pixels,
+// and each point's label.
+struct NoisyFrame {
+  synth::SceneCapture capture;
+  PointList points;
+  GridLayout grid;
+  std::vector<std::uint32_t> labels;
+};
+
+NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
+                       const synth::CaptureOptions& options) {
+  synth::SceneRecipe recipe;
+  recipe.layout = layout;
+  recipe.count = 3;
+  recipe.seed = seed;
+  NoisyFrame frame{synth::capture_scene(recipe, options), {}, {}, {}};
+  const synth::RangeImage& image = frame.capture.image;
+  frame.grid = GridLayout{image.width, image.height, {}};
+  for (std::size_t i = 0; i < image.points.size(); ++i) {
+    if (!image.points[i].allFinite()) continue;
+    frame.points.push_back(image.points[i]);
+    frame.grid.pixel.push_back(static_cast<std::uint32_t>(i));
+    frame.labels.push_back(image.labels[i]);
+  }
+  return frame;
+}
 
 // Random layout, seeds 2, 4, 6 and 9: five balls of radius 35-46 mm, 1.1-1.5 m off, their points
 // 3-8% of their radius apart in noise. A band of a few resolutions about a surface was narrower
@@ -29,26 +57,13 @@ TEST(NoisyDepthScene, BallsStaySpheres) {
   options.depth_noise = 0.0019;
   int balls = 0;
   for (std::uint64_t seed : {2, 4, 6, 9}) {
-    synth::SceneRecipe recipe;
-    recipe.layout = synth::SceneLayout::random;
-    recipe.count = 3;
-    recipe.seed = seed;
-    const synth::SceneCapture capture = synth::capture_scene(recipe, options);
-    PointList points;
-    GridLayout grid{capture.image.width, capture.image.height, {}};
-    std::vector<std::uint32_t> labels;
-    for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
-      if (!capture.image.points[i].allFinite()) continue;
-      points.push_back(capture.image.points[i]);
-      grid.pixel.push_back(static_cast<std::uint32_t>(i));
-      labels.push_back(capture.image.labels[i]);
-    }
-    const auto result = pipeline::recognize_cloud(points, grid, cfg, "noisy table");
-    for (const synth::SceneObject& object : capture.scene.objects) {
+    const NoisyFrame frame = noisy_frame(synth::SceneLayout::random, seed, options);
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy table");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
       if (object.solid.kind != synth::ShapeKind::sphere) continue;
       ++balls;
       const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, labels, object.label);
+          testing::report_of_label(result.objects, frame.labels, object.label);
       SCOPED_TRACE("seed " + std::to_string(seed) + ", label " + std::to_string(object.label));
       ASSERT_NE(holder, nullptr);
       EXPECT_EQ(holder->shape, "sphere");
@@ -84,26 +99,13 @@ TEST(NoisyDepthScene, ConesSeenToTheirTipStayCones) {
       {synth::SceneLayout::wall, 4},   {synth::SceneLayout::wall, 5},
       {synth::SceneLayout::wall, 7}};
   for (const auto& [layout, seed] : frames) {
-    synth::SceneRecipe recipe;
-    recipe.layout = layout;
-    recipe.count = 3;
-    recipe.seed = seed;
-    const synth::SceneCapture capture = synth::capture_scene(recipe, options);
-    PointList points;
-    GridLayout grid{capture.image.width, capture.image.height, {}};
-    std::vector<std::uint32_t> labels;
-    for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
-      if (!capture.image.points[i].allFinite()) continue;
-      points.push_back(capture.image.points[i]);
-      grid.pixel.push_back(static_cast<std::uint32_t>(i));
-      labels.push_back(capture.image.labels[i]);
-    }
-    const auto result = pipeline::recognize_cloud(points, grid, cfg, "noisy cones");
-    for (const synth::SceneObject& object : capture.scene.objects) {
+    const NoisyFrame frame = noisy_frame(layout, seed, options);
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy cones");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
       if (object.solid.kind != synth::ShapeKind::cone) continue;
       ++cones;
       const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, labels, object.label);
+          testing::report_of_label(result.objects, frame.labels, object.label);
       SCOPED_TRACE("seed " + std::to_string(seed) + ", label " + std::to_string(object.label));
       ASSERT_NE(holder, nullptr);
       EXPECT_EQ(holder->shape, "cone");
