@@ -143,6 +143,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("inside_view_share", c.inside_view_share);
   f("container_rim_quantile", c.container_rim_quantile);
   f("side_fit_min_inlier_fraction", c.side_fit_min_inlier_fraction);
+  f("second_chance_round_below", c.second_chance_round_below);
   f("min_side_arc_degrees", c.min_side_arc_degrees);
   f("cylinder_refine_band", c.cylinder_refine_band);
   f("cylinder_refine_iterations", c.cylinder_refine_iterations);

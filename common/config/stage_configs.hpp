@@ -150,6 +150,9 @@ struct SolveConfig {
   double cap_circle_agreement = 0.1;     // the side's own circle is kept when centre and radius lie within this share of the cap circle's radius of it
   double min_side_share = 0.05;          // a cylinder with a circular cap takes its radius from the side when this share of the points is on it
   double side_fit_min_inlier_fraction = 0.7;  // the cylinder from side normals alone (the second chance) is reported only if it explains this share
+  double second_chance_round_below =
+      0.9;  // ... tried also where a sphere or cylinder chosen explains less than this share (0:
+            // only where no candidate explains min_inlier_fraction)
   double min_side_arc_degrees = 90.0;    // ... and only if its side's explained points cover this arc around the axis
   double cylinder_refine_band = 6.0;     // a cylinder axis from side normals is refined on side points within this (resolutions) of its side ...
   std::int64_t cylinder_refine_iterations = 15;  // ... in at most this many Gauss-Newton steps (0: the normals' axis as it is)

@@ -327,9 +327,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // The second chance fits axis, position and radius to the points alone, free of any face or
   // key-point: it must explain more of them (cfg.side_fit_min_inlier_fraction). A frustum is
   // the answer only where no cylinder explains the points: the second chance is tried against it
-  // too, and a cylinder explaining nearly as many (cfg.preferred_margin) stands.
+  // too, and a cylinder explaining nearly as many (cfg.preferred_margin) stands. So is a sphere or
+  // cylinder that leaves many points unexplained (cfg.second_chance_round_below): a can seen over
+  // part of its arc, its points coarse or noisy, passes for part of a ball, and a cylinder on a
+  // flat-looking strip taken for its cap is tilted; the freer cylinder must explain more.
   const bool frustum = chosen && chosen->first.shape == Shape::frustum;
-  if (!sphere_only && (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum)) {
+  const bool weak_round =
+      chosen && (chosen->first.shape == Shape::sphere || chosen->first.shape == Shape::cylinder) &&
+      chosen->second.explained < cfg.second_chance_round_below;
+  if (!sphere_only &&
+      (!chosen || chosen->second.explained < cfg.min_inlier_fraction || frustum || weak_round)) {
     if (auto second = input.side_normals_cylinder(); admissible(second)) {
       const Verification v =
           verify(cloud, *second, tolerance, static_cast<std::size_t>(cfg.verify_samples));
