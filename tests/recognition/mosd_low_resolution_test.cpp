@@ -2,32 +2,16 @@
 // resolution gives them, `cloudshape-bench --scenes --decimate 2`): cans stay cylinders.
 #include <gtest/gtest.h>
 
-#include <cstddef>
 #include <string>
 
 #include "config/pipeline_config.hpp"
+#include "io/cloud_decimate.hpp"
 #include "io/cloud_reader.hpp"
 #include "mosd_frames.hpp"
 #include "pipeline/recognize.hpp"
 
 namespace cloudshape {
 namespace {
-
-// The points on every other pixel of every other row, on the grid half as wide and high.
-io::CloudFile every_other_pixel(const io::CloudFile& file) {
-  io::CloudFile out;
-  const std::size_t width = file.grid.width;
-  out.grid.width = (width + 1) / 2;
-  out.grid.height = (file.grid.height + 1) / 2;
-  for (std::size_t i = 0; i < file.points.size(); ++i) {
-    const std::size_t row = file.grid.pixel[i] / width, column = file.grid.pixel[i] % width;
-    if (row % 2 != 0 || column % 2 != 0) continue;
-    out.points.push_back(file.points[i]);
-    out.labels.push_back(file.labels[i]);
-    out.grid.pixel.push_back(static_cast<std::uint32_t>(row / 2 * out.grid.width + column / 2));
-  }
-  return out;
-}
 
 // learn39 and learn44, object 4 of each: a can about 0.8 m off seen over part of its arc. In
 // learn44, 960 points at this resolution: its faces and key-points gave a cylinder explaining 65%
@@ -40,7 +24,7 @@ TEST(MosdLowResolution, ACanSeenOverPartOfItsArcIsNoBall) {
   if (mosd::data_missing()) GTEST_SKIP() << mosd::kDir << " not present";
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   for (int frame : {39, 44}) {
-    const io::CloudFile file = every_other_pixel(io::read_cloud(mosd::frame_path(frame)));
+    const io::CloudFile file = io::decimated(io::read_cloud(mosd::frame_path(frame)), 2);
     ASSERT_EQ(file.grid.width, 320u);
     ASSERT_EQ(file.grid.height, 240u);
     const auto result =

@@ -16,6 +16,7 @@
 #include <unordered_map>
 
 #include "geometry/voxel_grid.hpp"
+#include "io/cloud_decimate.hpp"
 #include "io/cloud_reader.hpp"
 #include "pipeline/recognize.hpp"
 #include "scene_report.hpp"
@@ -145,25 +146,6 @@ io::CloudFile voxel_centroids(const io::CloudFile& cloud, double size, const Poi
   return out;
 }
 
-// Of an organized cloud, the points on every `step`-th pixel of every `step`-th row, in their
-// order, on the grid `step` times smaller each way (a camera's frame at a lower resolution).
-io::CloudFile decimated(const io::CloudFile& cloud, std::size_t step) {
-  io::CloudFile out;
-  out.format = cloud.format;
-  const std::size_t width = cloud.grid.width;
-  out.grid.width = (width + step - 1) / step;
-  out.grid.height = (cloud.grid.height + step - 1) / step;
-  for (std::size_t i = 0; i < cloud.points.size(); ++i) {
-    const std::size_t row = cloud.grid.pixel[i] / width, column = cloud.grid.pixel[i] % width;
-    if (row % step != 0 || column % step != 0) continue;
-    out.points.push_back(cloud.points[i]);
-    out.labels.push_back(cloud.labels[i]);
-    out.grid.pixel.push_back(
-        static_cast<std::uint32_t>(row / step * out.grid.width + column / step));
-  }
-  return out;
-}
-
 // The scene's cloud, which must carry its labels; on every `decimate`-th pixel and row of its
 // grid when that is above 1; without its pixel grid when `unorganized`, downsampled to voxel
 // centroids of edge `voxel` when that is positive.
@@ -178,7 +160,7 @@ io::CloudFile read_labelled_scene(const Scene& scene, bool unorganized, double v
       throw InputError{
           scene.path.string() + ": --decimate " + std::to_string(decimate) +
           " needs an organized scene (a PCD of HEIGHT > 1), and this one has no pixel grid"};
-    cloud = decimated(cloud, static_cast<std::size_t>(decimate));
+    cloud = io::decimated(cloud, static_cast<std::size_t>(decimate));
   }
   if (unorganized) cloud.grid = GridLayout{};
   if (!(voxel > 0.0)) return cloud;
