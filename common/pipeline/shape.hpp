@@ -18,6 +18,12 @@ inline constexpr std::array<Shape, 8> kNamedShapes = {
     Shape::box,      Shape::tetrahedron, Shape::pentagonal_prism, Shape::cone,
     Shape::cylinder, Shape::sphere,      Shape::prism,            Shape::frustum};
 
+// The polyhedra the key-points name from their corner counts (the classifier's first candidate):
+// where one of them is named, a round solid is only a rival hypothesis.
+inline bool polyhedron_by_corners(Shape s) {
+  return s == Shape::box || s == Shape::tetrahedron || s == Shape::pentagonal_prism;
+}
+
 inline std::string shape_name(Shape s) {
   switch (s) {
     case Shape::box: return "box";

@@ -33,9 +33,7 @@ FittedSolid make_cone(const Point& centre, const Eigen::Vector3d& axis, double r
 // only a rival hypothesis: the fits that need the cloud's normals are not worth computing.
 bool polyhedron_class(const SolveInput& in) {
   const auto& classes = in.classification.candidates;
-  return !classes.empty() &&
-         (classes.front() == Shape::box || classes.front() == Shape::tetrahedron ||
-          classes.front() == Shape::pentagonal_prism);
+  return !classes.empty() && polyhedron_by_corners(classes.front());
 }
 
 // A cone whose base is not seen (a single view, the base on the table). Every tangent

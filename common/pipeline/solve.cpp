@@ -265,9 +265,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // Where the key-points' class is a polyhedron and its solid was fitted, the cone is only a rival
   // (fit_cone computes no normals there either); a class whose own solid failed says nothing.
   const bool polyhedron_fitted =
-      (candidates.front() == Shape::box || candidates.front() == Shape::tetrahedron ||
-       candidates.front() == Shape::pentagonal_prism) &&
-      fit_of.front().has_value();
+      polyhedron_by_corners(candidates.front()) && fit_of.front().has_value();
   for (std::size_t i = 0; i < candidates.size() && !polyhedron_fitted; ++i) {
     if (candidates[i] != Shape::cone) continue;
     const double cone_share = fit_of[i] ? fit_of[i]->second.explained : 0.0;
