@@ -54,6 +54,9 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("convex_share", c.convex_share);
   f("crease_overlap", c.crease_overlap);
   f("crease_band", c.crease_band);
+  f("piece_band", c.piece_band);
+  f("piece_max_planes", c.piece_max_planes);
+  f("piece_cover", c.piece_cover);
   f("flat_junction_length", c.flat_junction_length);
   f("concave_cut_band", c.concave_cut_band);
   f("concave_cut_cross_share", c.concave_cut_cross_share);

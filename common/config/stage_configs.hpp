@@ -109,6 +109,9 @@ struct SegmentConfig {
   double convex_share = 0.5;               // adjacent patches join when at least this share of their junction is convex
   double crease_overlap = 0.5;             // ... and, meeting at an angle, their spans along the crease overlap by this share of the shorter (0: off)
   double crease_band = 4.0;                // ... (each patch's nodes within this many node spacings of the other's plane)
+  double piece_band = 3.0;                 // a patch of flat pieces (node spacings off a plane) ...
+  std::int64_t piece_max_planes = 3;       // ... two to this many (0 or 1: off) ...
+  double piece_cover = 0.9;                // ... holding this share of it is split into them
   double flat_junction_length = 0.5;       // organized: two parallel patches side by side join only along at least this many times the square root of the smaller one's nodes
   double concave_cut_band = 3.0;           // organized: a segment whose flat patch meets another of its patches concavely is cut along its plane: within this many node spacings of it is on it ...
   double concave_cut_cross_share = 0.05;   // ... a patch with more than this share of its surface nodes beyond the band on one side goes there; on both, a flat one (a face through the cut) or one not two flat pieces stops the cut

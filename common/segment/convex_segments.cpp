@@ -9,6 +9,7 @@
 #include "geometry/pca.hpp"
 #include "segment/concave_cuts.hpp"
 #include "segment/crease_overlap.hpp"
+#include "segment/planar_pieces.hpp"
 
 namespace cloudshape::segment {
 namespace {
@@ -130,6 +131,13 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
         return line_like[component[a]] || g.normals[a].dot(g.normals[b]) >= smooth_cos;
       },
       patches);
+  // In a depth image a patch of offset flat pieces (faces of two solids touching at a corner) is
+  // split into them; nodes in no piece join the nearest as edge nodes do.
+  if (depth_image && split_planar_pieces(g, patch, patches, cfg)) {
+    for (std::uint32_t n = 0; n < g.size(); ++n) {
+      if (!not_surface[n] && patch[n] < 0) edge_node[n] = 1;
+    }
+  }
 
   // Edge nodes join the nearest patch (breadth first), remembering the surface node they came
   // from: a junction is judged between the surface nodes on either side of the edge band.

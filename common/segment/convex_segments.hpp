@@ -26,8 +26,9 @@ std::vector<char> narrow_groups(const NeighbourGraph& graph, const std::vector<s
 // patch. Two adjacent patches join when at least cfg.convex_share of the edges between them are
 // convex, judged between the surface nodes either side of the edge band
 // ((n_a - n_b) . (x_a - x_b) >= 0, or normals within cfg.convex_tolerance_degrees). In a depth
-// image (`depth_image`: an organized cloud's graph, whose nodes tile every face seen) three more
-// rules hold: patches meeting at an angle must share their crease (CreaseOverlap,
+// image (`depth_image`: an organized cloud's graph, whose nodes tile every face seen) a patch of a
+// few offset flat pieces is first split into them (split_planar_pieces), and three more rules
+// hold: patches meeting at an angle must share their crease (CreaseOverlap,
 // cfg.crease_overlap and cfg.crease_band); a patch under cfg.min_object_nodes joins in a second
 // pass, never bridging two groups whose own junction was rejected; and a segment two of whose
 // patches meet concavely is cut along the flat one's plane (cut_at_concave_faces,

@@ -114,42 +114,29 @@ TEST(SegmentSyntheticScenes, TouchingObjects) { expect_every_object(synth::Scene
 TEST(SegmentSyntheticScenes, DISABLED_BoxOnBox) { expect_every_object(synth::SceneLayout::stacked, 2); }
 // Stacks of three boxes, each turned at random on the one below: where an upper box's face is
 // turned only 20-45 degrees from the face below it, the two faces' normals blur into each other
-// over the normal window and grow one patch; the crease test (segment.crease_degrees) cuts them.
+// over the normal window and grow one patch; the crease test (segment.crease_degrees) cuts them,
+// and a patch of offset flat pieces is split into them (segment.piece_*, planar_pieces.hpp). Each
+// rule alone finds more boxes than neither. Measured (320 x 240 frames): both 27 of 30, creases
+// alone 24, pieces alone 28, neither 21.
 TEST(SegmentSyntheticScenes, StacksOfThreeTurnedBoxes) {
-  config::SegmentConfig without_creases = config::PipelineConfig{}.segment;
-  without_creases.crease_degrees = 0.0;
-  const StackCounts s = stacks_of_three(without_creases);
-  SCOPED_TRACE(s.detail);
-  // Measured: 24 of 30 boxes found (320 x 240 frames).
+  config::SegmentConfig neither = config::PipelineConfig{}.segment;
+  neither.crease_degrees = 0.0;
+  neither.piece_max_planes = 0;
+  config::SegmentConfig only_creases = config::PipelineConfig{}.segment, only_pieces = only_creases;
+  only_creases.piece_max_planes = 0;
+  only_pieces.crease_degrees = 0.0;
+  const StackCounts s = stacks_of_three(neither);
+  const std::size_t creases = stacks_of_three(only_creases).found_without;
+  const std::size_t pieces = stacks_of_three(only_pieces).found_without;
+  SCOPED_TRACE(s.detail + " (found " + std::to_string(s.found) + ", creases alone " +
+               std::to_string(creases) + ", pieces alone " + std::to_string(pieces) + ", neither " +
+               std::to_string(s.found_without) + ")");
   EXPECT_GE(3 * s.found, 2 * s.objects) << "at least two thirds of the boxes, each one segment (IoU >= 0.8)";
+  EXPECT_GT(creases, s.found_without);
+  EXPECT_GT(pieces, s.found_without);
   EXPECT_GT(s.found, s.found_without);
   EXPECT_EQ(s.false_objects, 0u);
 }
-// A box on a box turned about 10 deg from it (stacked seed 1): the upper box's side is nearly in
-// line with the lower one's, the junction between them is flat within convex_tolerance_degrees,
-// so local convexity joins the two boxes through their sides, although the lower box's top meets
-// the upper box's front concavely. The segment is cut along that top's plane (concave_cuts.hpp);
-// the sides' flat junction is also too short to join them (segment.flat_junction_length).
-TEST(SegmentSyntheticScenes, ABoxOnABoxIsCutAlongTheLowerBoxsTop) {
-  synth::SceneRecipe recipe;
-  recipe.layout = synth::SceneLayout::stacked;
-  recipe.count = 2;
-  recipe.seed = 1;
-  // Two rules part them, each alone: the cut, and the short flat junction between the sides
-  // (segment.flat_junction_length); with neither they are one segment.
-  config::SegmentConfig without_cuts = config::PipelineConfig{}.segment, only_cuts = without_cuts;
-  without_cuts.concave_cut_band = 0.0;
-  without_cuts.flat_junction_length = 0.0;
-  only_cuts.flat_junction_length = 0.0;
-  const Scored with = score(recipe), without = score(recipe, without_cuts), cuts = score(recipe, only_cuts);
-  EXPECT_EQ(cuts.found, 2u) << "the cuts alone:" << cuts.detail;
-  SCOPED_TRACE("with cuts:" + with.detail + "; without:" + without.detail);
-  EXPECT_EQ(with.objects, 2u);
-  EXPECT_EQ(with.found, 2u) << "each box one segment (IoU >= 0.8)";
-  EXPECT_EQ(with.false_objects, 0u);
-  EXPECT_LT(without.found, 2u);
-}
-
 // Stacks of three boxes (the frames of StacksOfThreeTurnedBoxes): the concave cuts find more of
 // them and make no false object.
 TEST(SegmentSyntheticScenes, ConcaveCutsSeparateStackedBoxes) {
@@ -157,8 +144,8 @@ TEST(SegmentSyntheticScenes, ConcaveCutsSeparateStackedBoxes) {
   without_cuts.concave_cut_band = 0.0;
   const StackCounts s = stacks_of_three(without_cuts);
   SCOPED_TRACE(s.detail + " (found " + std::to_string(s.found) + ", without cuts " + std::to_string(s.found_without) + ")");
-  // Measured: 24 of 30 with the cuts, 21 without.
-  EXPECT_GE(s.found, 23u);
+  // Measured: 27 of 30 with the cuts, 25 without.
+  EXPECT_GE(s.found, 25u);
   EXPECT_GT(s.found, s.found_without);
   EXPECT_EQ(s.false_objects, 0u);
 }
