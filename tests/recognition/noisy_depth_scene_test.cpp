@@ -45,6 +45,17 @@ NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
   return frame;
 }
 
+// A Kinect's noise drawn per pixel and its other faults (`--depth-noise 0.0019 --quantize
+// --shadows --flying-pixels 0.5`).
+synth::CaptureOptions kinect_faults() {
+  synth::CaptureOptions options;
+  options.depth_noise = 0.0019;
+  options.quantize = true;
+  options.shadows = true;
+  options.flying_pixels = 0.5;
+  return options;
+}
+
 // Random layout, seeds 2, 4, 6 and 9: five balls of radius 35-46 mm, 1.1-1.5 m off, their points
 // 3-8% of their radius apart in noise. A band of a few resolutions about a surface was narrower
 // than that noise and selected the points that happened to lie flat: a plane through a ball's cap
@@ -88,11 +99,7 @@ TEST(NoisyDepthScene, BallsStaySpheres) {
 // 12% (the longest: its tip region thin and noisy); tolerance 20%.
 TEST(NoisyDepthScene, ConesSeenToTheirTipStayCones) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions options;
-  options.depth_noise = 0.0019;
-  options.quantize = true;
-  options.shadows = true;
-  options.flying_pixels = 0.5;
+  const synth::CaptureOptions options = kinect_faults();
   int cones = 0;
   const std::pair<synth::SceneLayout, std::uint64_t> frames[] = {
       {synth::SceneLayout::random, 1}, {synth::SceneLayout::random, 2},
@@ -129,11 +136,7 @@ TEST(NoisyDepthScene, ConesSeenToTheirTipStayCones) {
 // (measured: at most 9 mm off, the 89 mm side of the middle box; the top box's 33 mm height 40).
 TEST(NoisyDepthScene, BoxesStackedTurnedComeApart) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions options;
-  options.depth_noise = 0.0019;
-  options.quantize = true;
-  options.shadows = true;
-  options.flying_pixels = 0.5;
+  const synth::CaptureOptions options = kinect_faults();
   const NoisyFrame frame = noisy_frame(synth::SceneLayout::stacked, 9, options);
   const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "stacked boxes");
   std::vector<const pipeline::ObjectResult*> holders;

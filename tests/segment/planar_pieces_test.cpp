@@ -70,14 +70,19 @@ std::vector<std::int32_t> one_patch(const NeighbourGraph& g) {
 
 // Two faces 30 x 20 nodes, parallel, 6 node spacings apart along their normal, meeting at one
 // corner (the lattice joins them there only): as a box turned on another touches its neighbour's
-// face. Two pieces, each face whole in one.
-TEST(PlanarPieces, OffsetFacesTouchingAtACornerComeApart) {
+// face.
+NeighbourGraph faces_touching_at_a_corner() {
   const Eigen::Vector3d up(0, 0, 1);
-  const NeighbourGraph g = lattice_graph(60, 40, [&](int c, int r) -> std::optional<Sample> {
+  return lattice_graph(60, 40, [&](int c, int r) -> std::optional<Sample> {
     if (c < 30 && r < 20) return Sample{Point(c, r, 0), up};
     if (c >= 30 && r >= 20) return Sample{Point(c, r, 6), up};
     return std::nullopt;
   });
+}
+
+// Faces of two solids touching at a corner: two pieces, each face whole in one.
+TEST(PlanarPieces, OffsetFacesTouchingAtACornerComeApart) {
+  const NeighbourGraph g = faces_touching_at_a_corner();
   std::vector<std::int32_t> patch = one_patch(g);
   std::int32_t patches = 1;
   const config::SegmentConfig cfg = config::PipelineConfig{}.segment;
@@ -122,12 +127,7 @@ TEST(PlanarPieces, ACurvedSideStaysWhole) {
 // Patches under twice min_object_nodes and the switch (piece_max_planes 1) leave every label as it
 // was.
 TEST(PlanarPieces, SmallPatchesAndTheSwitchLeaveLabels) {
-  const Eigen::Vector3d up(0, 0, 1);
-  const NeighbourGraph g = lattice_graph(60, 40, [&](int c, int r) -> std::optional<Sample> {
-    if (c < 30 && r < 20) return Sample{Point(c, r, 0), up};
-    if (c >= 30 && r >= 20) return Sample{Point(c, r, 6), up};
-    return std::nullopt;
-  });
+  const NeighbourGraph g = faces_touching_at_a_corner();
   config::SegmentConfig off = config::PipelineConfig{}.segment;
   off.piece_max_planes = 1;
   std::vector<std::int32_t> patch = one_patch(g);
