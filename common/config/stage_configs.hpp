@@ -172,7 +172,7 @@ struct SolveConfig {
   double min_side_span = 0.8;            // a prism side seen spans at least this share of the fitted side's width (+ inlier_distance at each edge)
   double polyhedron_face_share = 0.5;    // tetrahedron and prism fits: planes along their faces hold at least this share of the points (prism sides: of the points of planes around the axis)
   std::int64_t extent_hull_samples = 2000;  // points the extent's minimum-area rectangles are chosen from (its bounds take every point)
-  std::int64_t solid_min_scan_lines = 3;  // a lidar object on fewer scan lines is tried as a sphere only ...
+  std::int64_t solid_min_scan_lines = 5;  // a lidar object on fewer scan lines is tried as a sphere only ...
   double scan_noise_ratio = 3.0;         // ... and its solid leaves the points at most this many times their noise from it (0: off)
   double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
   double cone_tip_gap = 0.2;             // ... and no cone either when its points stop this share short of the apex, ringing it or not (a frustum seen from one side)

@@ -106,8 +106,10 @@ TEST(LidarScene, GroundAndWallsAloneGiveNoSceneSizedObject) {
 // a wrong solid passes within inlier_distance of most points (a ring's spacing, far finer than the
 // ranging noise, sets the resolution): 19 objects were named wrongly. A solid that leaves its
 // points scattered by more than solve.scan_noise_ratio (3) times their noise along the rings is no
-// answer: 15 now, 41 named right (42 before: a cone 0.5 m wide for a 0.25 m one is no longer
-// named). Bounds: 17 wrong, 39 right.
+// answer, and an object on fewer rings than solve.solid_min_scan_lines (5) is tried as a sphere
+// only: on three or four a tetrahedron, prism, cylinder or ball passed for a box, cone or frustum.
+// Measured: 9 named wrongly, 42 right (14 and 42 where only two rings meant a sphere only). Bounds:
+// 11 wrong, 39 right.
 TEST(LidarScene, FewSolidsNamedWronglyOnFewRings) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   int right = 0, wrong = 0;
@@ -139,7 +141,7 @@ TEST(LidarScene, FewSolidsNamedWronglyOnFewRings) {
       }
     }
   }
-  EXPECT_LE(wrong, 17) << wrongs;
+  EXPECT_LE(wrong, 11) << wrongs;
   EXPECT_GE(right, 39);
 }
 
