@@ -75,14 +75,14 @@ TEST(LidarFewRings, ABallOnThreeRingsIsASphere) {
 }
 
 // Boxes 0.5 x 0.4 x 0.45 m, turned, 2.5-3 m off, on five to seven rings: each ring is a straight
-// run along each face it crosses, no arc, so the faces should stay flat faces and no sphere,
-// cylinder, cone or frustum be named.
-// DISABLED (issue 10, left; found with the arc rule, which does not cause it: the same seed fails
-// without it): seed 6 comes out a cone. Rings 9 cm apart cover a face with lines, and the fill
-// test's cells, twice the spacing along a ring (2 cm), find such a face mostly empty, so it does
-// not count as flat. The fill of a face sampled by lines wants the cell of the lines' spacing
-// (a lidar frame knows it: its scan lines; a lone cloud does not).
-TEST(LidarFewRings, DISABLED_ABoxsStraightRingsStayFlatFaces) {
+// run along each face it crosses, no arc, so no sphere, cylinder, cone or frustum may be named.
+// Measured: all six `unknown`. Seed 6 came out a cone while any solid within inlier_distance of
+// the points was taken; that cone leaves them 3.7 times their noise from it
+// (solve.scan_noise_ratio). Left: the boxes are not named boxes either. Rings 9 cm apart cover a
+// face with lines, and the fill test's cells, twice the spacing along a ring (2 cm), find such a
+// face mostly empty, so it does not count as flat; the fill of a face sampled by lines wants the
+// cell of the lines' spacing.
+TEST(LidarFewRings, ABoxsStraightRingsNameNoRoundSolid) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   std::mt19937_64 draw(6);
   std::uniform_real_distribution<double> range_of(2.5, 3.0), azimuth_of(-3.0, 3.0), turn_of(0.2, 1.3);
