@@ -50,6 +50,11 @@ bool split_planar_pieces(const NeighbourGraph& g, std::vector<std::int32_t>& pat
   for (std::uint32_t n = 0; n < g.size(); ++n) {
     if (patch[n] >= 0) members[patch[n]].push_back(n);
   }
+  // Node n lies on the plane through node c with c's normal: within the band, its normal along.
+  const auto on_plane = [&](std::uint32_t c, std::uint32_t n) {
+    return std::abs(g.normals[c].dot(g.nodes[n] - g.nodes[c])) <= cfg.piece_band * g.spacing[c] &&
+           g.normals[c].dot(g.normals[n]) >= cos_smooth;
+  };
   std::vector<std::int32_t> mark(g.size(), 0);
   std::int32_t tag = 1;
   bool split = false;
@@ -69,25 +74,16 @@ bool split_planar_pieces(const NeighbourGraph& g, std::vector<std::int32_t>& pat
       std::uint32_t best_node = left.front();
       for (std::size_t h = 0; h < kHypotheses; ++h) {
         const std::uint32_t c = left[(2 * h + 1) * left.size() / (2 * kHypotheses)];
-        const double band = cfg.piece_band * g.spacing[c];
         std::size_t count = 0;
-        for (std::size_t k = 0; k < left.size(); k += stride) {
-          const std::uint32_t n = left[k];
-          if (std::abs(g.normals[c].dot(g.nodes[n] - g.nodes[c])) <= band &&
-              g.normals[c].dot(g.normals[n]) >= cos_smooth)
-            ++count;
-        }
+        for (std::size_t k = 0; k < left.size(); k += stride) count += on_plane(c, left[k]) ? 1 : 0;
         if (count > best_count) {
           best_count = count;
           best_node = c;
         }
       }
-      const double band = cfg.piece_band * g.spacing[best_node];
       inliers.clear();
       for (std::uint32_t n : left) {
-        if (std::abs(g.normals[best_node].dot(g.nodes[n] - g.nodes[best_node])) <= band &&
-            g.normals[best_node].dot(g.normals[n]) >= cos_smooth)
-          inliers.push_back(n);
+        if (on_plane(best_node, n)) inliers.push_back(n);
       }
       std::vector<std::uint32_t> piece = largest_group(g, inliers, mark, tag);
       tag += 2;
