@@ -78,6 +78,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("contact_min_band", c.contact_min_band);
   f("remainder_refine", c.remainder_refine);
   f("fragment_max_width", c.fragment_max_width);
+  f("fragment_min_elongation", c.fragment_min_elongation);
   f("fragment_max_share", c.fragment_max_share);
   f("min_object_nodes", c.min_object_nodes);
   f("scan_object_min_beams", c.scan_object_min_beams);

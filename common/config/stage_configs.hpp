@@ -133,6 +133,7 @@ struct SegmentConfig {
   double contact_min_band = 0.1;           // ... the band at least this many of its node spacings (a noise-free plane has no noise of its own)
   double remainder_refine = 2.0;           // unorganized: what structure leaves is re-gridded when the node budget alone would make its voxel at least this many times finer
   double fragment_max_width = 2.0;         // a segment this narrow (spread across its length, node spacings) ...
+  double fragment_min_elongation = 3.0;    // (depth image: strips this long or bordering one) ...
   double fragment_max_share = 0.2;         // ... and smaller than this share of the largest is a sliver a sensor leaves along silhouettes
   std::int64_t min_object_nodes = 30;      // segments with fewer nodes are clutter (lidar: after a try alone)
   std::int64_t scan_object_min_beams = 2;  // in a lidar frame (scan_beam_*), an object on fewer beams is a strip of ground or wall: one ring shows no vertical extent (two fix a sphere)

@@ -63,6 +63,34 @@ double in_structure_share(const PointList& points, const std::vector<std::uint32
   return static_cast<double>(most) / static_cast<double>(own.size());
 }
 
+// Per segment, whether it is a sliver a sensor leaves along silhouettes: narrow (narrow_groups),
+// and in a depth image also a strip (cfg.fragment_min_elongation times as long as it is wide) or
+// bordering another segment. A narrow segment there that is compact and alone is a small solid
+// seen from afar: noisy pixels' depth noise swells their nodes' spacing, and a ball of a few
+// hundred nodes is then as few spacings across as a strip. (A lidar frame's compact piece alone
+// is mostly clutter: a pole's or a bush's few rings.)
+std::vector<char> slivers(const NeighbourGraph& g, const std::vector<std::int32_t>& label,
+                          const std::vector<std::vector<std::uint32_t>>& members, bool depth_image,
+                          const config::SegmentConfig& cfg) {
+  const auto segments = static_cast<std::int32_t>(members.size());
+  std::vector<char> sliver = narrow_groups(g, label, segments, cfg.fragment_max_width);
+  for (std::int32_t s = 0; s < segments && depth_image; ++s) {
+    if (!sliver[s] || members[s].size() < 3) continue;
+    const geometry::Pca pca = geometry::compute_pca(g.nodes, members[s]);
+    const double across = std::sqrt(std::max(0.0, pca.eigenvalues(1)));
+    if (std::sqrt(std::max(0.0, pca.eigenvalues(2))) >= cfg.fragment_min_elongation * across)
+      continue;
+    bool borders = false;
+    for (std::uint32_t n : members[s]) {
+      g.for_neighbours(
+          n, [&](std::uint32_t m) { borders = borders || (label[m] >= 0 && label[m] != s); });
+      if (borders) break;
+    }
+    sliver[s] = borders;
+  }
+  return sliver;
+}
+
 // `scan`: the viewpoint of the lidar frame this part of an unorganized cloud comes from, if any
 // (a lidar frame in its sensor's frame, scan_origin, sees from the origin: normals towards it).
 // An unorganized cloud without a lidar's viewpoint (`may_be_isolated`) is gridded to
@@ -185,7 +213,7 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
                                     cfg.min_object_share * static_cast<double>(g.size()));
   std::size_t largest = 0;
   for (const auto& m : members) largest = std::max(largest, m.size());
-  const std::vector<char> narrow = narrow_groups(g, label, segments, cfg.fragment_max_width);
+  const std::vector<char> narrow = slivers(g, label, members, grid.organized() || camera, cfg);
   std::vector<std::int32_t> object_of_segment(static_cast<std::size_t>(segments), -1);
   // Input points per segment, for a segment segmented again at its own resolution: in a lidar
   // frame, where a narrow segment may still hold a small target among ground rings (elsewhere a

@@ -29,7 +29,8 @@ struct SceneSegmentation {
 
 // The graph (pixel cells when grid.organized(), voxels otherwise), structure planes removed,
 // convex segments; segments under cfg.min_object_nodes nodes or cfg.min_object_share of the
-// nodes are clutter, narrow ones smaller than cfg.fragment_max_share of the largest are slivers,
+// nodes are clutter, narrow ones smaller than cfg.fragment_max_share of the largest are slivers
+// (in a depth image only strips and those bordering another: cfg.fragment_min_elongation),
 // and flat segments lying in a structure plane are leftovers of it. An unorganized lidar frame in
 // its sensor's frame (scan_origin) sees from the origin, and its walls and ground seen from inside
 // are structure too; in an unorganized cloud what the structure leaves is gridded anew when that
