@@ -160,6 +160,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("preferred_margin", c.preferred_margin);
   f("guessed_side_cost", c.guessed_side_cost);
   f("closer_fit_margin", c.closer_fit_margin);
+  f("ambiguity_rms_ratio", c.ambiguity_rms_ratio);
   f("polyhedron_face_share", c.polyhedron_face_share);
   f("min_side_span", c.min_side_span);
   f("extent_hull_samples", c.extent_hull_samples);

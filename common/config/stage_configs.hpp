@@ -169,6 +169,7 @@ struct SolveConfig {
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
   double preferred_margin = 0.02;        // solids explaining within this share of the best are all in the running...
   double closer_fit_margin = 0.25;       // ... and one with an RMS this much lower than the key-point class's wins
+  double ambiguity_rms_ratio = 1.0;      // ... another family's as close (this x its RMS): unknown
   double guessed_side_cost = 0.02;       // ... less this per prism side on its cap's border alone
   double min_side_span = 0.8;            // a prism side seen spans at least this share of the fitted side's width (+ inlier_distance at each edge)
   double polyhedron_face_share = 0.5;    // tetrahedron and prism fits: planes along their faces hold at least this share of the points (prism sides: of the points of planes around the axis)

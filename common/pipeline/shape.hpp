@@ -24,6 +24,18 @@ inline bool polyhedron_by_corners(Shape s) {
   return s == Shape::box || s == Shape::tetrahedron || s == Shape::pentagonal_prism;
 }
 
+// Whether one shape is the other with a parameter pinned (a box is a four-sided prism, a cylinder
+// a frustum of equal radii, a cone one closed at its top), or the same: such a pair explaining the
+// same points is one answer said twice, not two.
+inline bool same_family(Shape a, Shape b) {
+  const auto special_of = [](Shape special, Shape general) {
+    return (general == Shape::prism &&
+            (special == Shape::box || special == Shape::pentagonal_prism)) ||
+           (general == Shape::frustum && (special == Shape::cylinder || special == Shape::cone));
+  };
+  return a == b || special_of(a, b) || special_of(b, a);
+}
+
 inline std::string shape_name(Shape s) {
   switch (s) {
     case Shape::box: return "box";

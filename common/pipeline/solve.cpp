@@ -349,6 +349,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   // The chosen round solid seen from its hollow side is the inside of a container, which is what
   // the points show (container.hpp); on two scan lines neither is determined.
+  bool contained = false;
   if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     if (sphere_only) {
       out.reason = lines() + ": a hollow side, and no container is determined";
@@ -360,6 +361,31 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       const Verification v = verify(cloud, *container, tolerance, static_cast<std::size_t>(cfg.verify_samples));
       fitted.emplace_back(std::move(*container), v);
       chosen = &fitted.back();
+      contained = true;
+    }
+  }
+  // Two solids of different families explaining as many points (cfg.preferred_margin), the other
+  // as closely or closer (cfg.ambiguity_rms_ratio of the chosen's RMS): the points do not tell
+  // them apart. Where the key-points found a polyhedron's corners, their class breaks the tie (a
+  // noisy box's corners outlast its flat faces); where they found only a view's border points
+  // (every single view has them: "cylinder"), it is no evidence (a small ball far off under a depth
+  // camera's noise came out a cylinder), and neither solid is named. (A container's rivals were
+  // fitted to its inside as an outside.)
+  if (chosen && !contained && cfg.ambiguity_rms_ratio > 0.0 &&
+      !polyhedron_by_corners(classification.shape) &&
+      chosen->second.explained >= cfg.min_inlier_fraction) {
+    for (const auto& f : fitted) {
+      if (same_family(f.first.shape, chosen->first.shape) ||
+          score(f) < score(*chosen) - cfg.preferred_margin ||
+          !(f.second.rms <= cfg.ambiguity_rms_ratio * chosen->second.rms))
+        continue;
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "a %s and a %s explain the points alike (%.0f%% and %.0f%%)",
+                    shape_name(chosen->first.shape).c_str(), shape_name(f.first.shape).c_str(),
+                    100.0 * chosen->second.explained, 100.0 * f.second.explained);
+      out.reason = (scan_lines > 0 ? lines() + ": " : std::string()) + buf;
+      out.extent = extent_of(cloud, {}, cfg, pool);
+      return out;
     }
   }
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {

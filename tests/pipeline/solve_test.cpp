@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "pipeline/shape.hpp"
 #include "pipeline/solve.hpp"
 #include "stage_fixtures.hpp"
 
@@ -123,6 +124,22 @@ TEST(Solve, OnFewScanLinesOnlyASphereIsNamed) {
 
 // With a pool the candidates are fitted side by side, sharing the once-computed normals: the
 // same solid, to the bit, as one after another.
+// A box is a four-sided prism, a pentagonal prism a five-sided one, a cylinder a frustum of equal
+// radii and a cone one closed at its top: each pair explains the same points as one answer, while
+// solids of different families that do so leave the object unknown (solve.ambiguity_rms_ratio).
+TEST(Solve, SameFamilyIsAShapeAndItsGeneralisation) {
+  EXPECT_TRUE(same_family(Shape::box, Shape::prism));
+  EXPECT_TRUE(same_family(Shape::prism, Shape::pentagonal_prism));
+  EXPECT_TRUE(same_family(Shape::cylinder, Shape::frustum));
+  EXPECT_TRUE(same_family(Shape::frustum, Shape::cone));
+  EXPECT_TRUE(same_family(Shape::sphere, Shape::sphere));
+  EXPECT_FALSE(same_family(Shape::cylinder, Shape::cone));
+  EXPECT_FALSE(same_family(Shape::cylinder, Shape::sphere));
+  EXPECT_FALSE(same_family(Shape::box, Shape::pentagonal_prism));
+  EXPECT_FALSE(same_family(Shape::box, Shape::frustum));
+  EXPECT_FALSE(same_family(Shape::tetrahedron, Shape::prism));
+}
+
 TEST(Solve, APoolGivesTheSameResult) {
   parallel::ThreadPool pool(3);
   for (const auto& s : {stage(synth::ShapeKind::box, {3.0, 2.0, 1.0}), stage(synth::ShapeKind::cylinder, {1.0, 3.0}),

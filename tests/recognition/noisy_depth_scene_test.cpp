@@ -28,10 +28,10 @@ struct NoisyFrame {
 };
 
 NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
-                       const synth::CaptureOptions& options) {
+                       const synth::CaptureOptions& options, std::uint32_t count = 3) {
   synth::SceneRecipe recipe;
   recipe.layout = layout;
-  recipe.count = 3;
+  recipe.count = count;
   recipe.seed = seed;
   NoisyFrame frame{synth::capture_scene(recipe, options), {}, {}, {}};
   const synth::RangeImage& image = frame.capture.image;
@@ -160,6 +160,66 @@ TEST(NoisyDepthScene, BoxesStackedTurnedComeApart) {
     for (std::size_t k = 0; k < 3; ++k) EXPECT_NEAR(found[k], truth[k], 0.012) << k;
   }
   EXPECT_EQ(holders.size(), 3u);
+}
+
+// How the objects of frames come out: named their own shape, named another, unknown.
+struct Names {
+  int right = 0, wrong = 0, unknown = 0,
+      alike = 0;  // alike: unknown as two solids explain it alike
+};
+
+Names names_of(const std::vector<NoisyFrame>& frames, const config::PipelineConfig& cfg) {
+  Names out;
+  for (const NoisyFrame& frame : frames) {
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "four solids");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, frame.labels, object.label);
+      if (holder == nullptr) continue;
+      if (holder->shape == "unknown") {
+        ++out.unknown;
+        out.alike += holder->reason.find("explain the points alike") != std::string::npos;
+      } else if (holder->shape == synth::to_string(object.solid.kind)) {
+        ++out.right;
+      } else {
+        ++out.wrong;
+      }
+    }
+  }
+  return out;
+}
+
+// The points as a PCD file stores them (float), as cloudshape-bench --scenes reads the frames.
+NoisyFrame stored_frame(synth::SceneLayout layout, std::uint64_t seed,
+                        const synth::CaptureOptions& options, std::uint32_t count) {
+  NoisyFrame frame = noisy_frame(layout, seed, options, count);
+  for (Point& p : frame.points) p = p.cast<float>().cast<double>();
+  return frame;
+}
+
+// Random and row layouts, seeds 1-10, with twice the Kinect's noise (`--depth-noise 0.004`, its
+// other faults too), and row seed 18 with four solids and the Kinect's own: small solids 1.3-1.8 m
+// off whose noise is a sixth to a tenth of their size. Six of the 18 named another solid (among
+// them balls and a pentagonal prism named cylinders, a cone a box) were so where a solid of another
+// family explained as many points as closely, and the key-points, finding no polyhedron's corners,
+// gave only a view's border ("cylinder") to break the tie. Such an object is now unknown
+// (solve.ambiguity_rms_ratio): those six, and none of the 40 named right.
+TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
+  auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  synth::CaptureOptions twice = kinect_faults();
+  twice.depth_noise = 0.004;
+  std::vector<NoisyFrame> frames;
+  for (synth::SceneLayout layout : {synth::SceneLayout::random, synth::SceneLayout::row})
+    for (std::uint64_t seed = 1; seed <= 10; ++seed)
+      frames.push_back(stored_frame(layout, seed, twice, 3));
+  frames.push_back(stored_frame(synth::SceneLayout::row, 18, kinect_faults(), 4));
+  const Names with = names_of(frames, cfg);
+  cfg.solve.ambiguity_rms_ratio = 0.0;
+  const Names without = names_of(frames, cfg);
+  EXPECT_EQ(without.alike, 0);
+  EXPECT_EQ(with.alike, 6);
+  EXPECT_EQ(with.wrong, without.wrong - 6);
+  EXPECT_EQ(with.right, without.right);
 }
 
 }  // namespace
