@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "config/pipeline_config.hpp"
+#include "kinect_faults.hpp"
 #include "pipeline/recognize.hpp"
 #include "report_of_label.hpp"
 #include "synth/ground_truth.hpp"
@@ -45,16 +46,7 @@ NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
   return frame;
 }
 
-// A Kinect's noise drawn per pixel and its other faults (`--depth-noise 0.0019 --quantize
-// --shadows --flying-pixels 0.5`).
-synth::CaptureOptions kinect_faults() {
-  synth::CaptureOptions options;
-  options.depth_noise = 0.0019;
-  options.quantize = true;
-  options.shadows = true;
-  options.flying_pixels = 0.5;
-  return options;
-}
+using testing::kinect_faults;
 
 // Random layout, seeds 2, 4, 6 and 9: five balls of radius 35-46 mm, 1.1-1.5 m off, their points
 // 3-8% of their radius apart in noise. A band of a few resolutions about a surface was narrower

@@ -11,6 +11,7 @@
 #include "captured_scene.hpp"
 #include "config/pipeline_config.hpp"
 #include "io/cloud_reader.hpp"
+#include "kinect_faults.hpp"
 #include "segment/segment_scene.hpp"
 #include "shared_data.hpp"
 #include "synth/scene_capture.hpp"
@@ -43,15 +44,10 @@ TEST(SegmentSlivers, AFarBallAloneIsAnObject) {
   recipe.layout = synth::SceneLayout::row;
   recipe.count = 3;
   recipe.seed = 8;
-  synth::CaptureOptions kinect;
-  kinect.depth_noise = 0.0019;
-  kinect.quantize = true;
-  kinect.shadows = true;
-  kinect.flying_pixels = 0.5;
   const config::SegmentConfig cfg = config::PipelineConfig{}.segment;
   config::SegmentConfig every_narrow = cfg;
   every_narrow.fragment_min_elongation = 0.0;
-  for (const synth::CaptureOptions& options : {synth::CaptureOptions{}, kinect}) {
+  for (const synth::CaptureOptions& options : {synth::CaptureOptions{}, testing::kinect_faults()}) {
     SCOPED_TRACE(options.depth_noise > 0.0 ? "Kinect noise" : "noise-free");
     const CapturedScene scene = capture_points(recipe, options);
     ASSERT_GT(scene.size.at(30), 500u);
