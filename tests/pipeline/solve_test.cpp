@@ -122,8 +122,6 @@ TEST(Solve, OnFewScanLinesOnlyASphereIsNamed) {
   expect_dimensions(ball, sphere.spec);
 }
 
-// With a pool the candidates are fitted side by side, sharing the once-computed normals: the
-// same solid, to the bit, as one after another.
 // A box is a four-sided prism, a pentagonal prism a five-sided one, a cylinder a frustum of equal
 // radii and a cone one closed at its top: each pair explains the same points as one answer, while
 // solids of different families that do so leave the object unknown (solve.ambiguity_rms_ratio).
@@ -140,6 +138,8 @@ TEST(Solve, SameFamilyIsAShapeAndItsGeneralisation) {
   EXPECT_FALSE(same_family(Shape::tetrahedron, Shape::prism));
 }
 
+// With a pool the candidates are fitted side by side, sharing the once-computed normals: the
+// same solid, to the bit, as one after another.
 TEST(Solve, APoolGivesTheSameResult) {
   parallel::ThreadPool pool(3);
   for (const auto& s : {stage(synth::ShapeKind::box, {3.0, 2.0, 1.0}), stage(synth::ShapeKind::cylinder, {1.0, 3.0}),

@@ -34,11 +34,10 @@ double best_share(const SceneSegmentation& s, const std::vector<std::uint32_t>& 
 }
 
 // Row layout, seed 8 (cloudshape-synth scene --layout row --seed 8): a ball of radius 47 mm
-// (label 30) 1.1 m off stands apart on the table, 150-200 cell nodes across which its nodes'
-// spacing is 1.7 of its spread across: as narrow as a strip, and it was dropped as one, noise-free
-// and under a Kinect's noise (`--depth-noise 0.0019 --quantize --shadows --flying-pixels 0.5`)
-// alike. Compact (its length 1.3-2 times its width) and bordering no other segment, it is an
-// object.
+// (label 30) 1.1 m off stands apart on the table, about 200 cell nodes spreading less than two of
+// their spacings across (1.75 under the Kinect's noise, which swells the spacing): as narrow as a
+// strip, it was dropped as one, noise-free and under a Kinect's faults alike. Compact (under twice
+// as long as wide) and bordering no other segment, it is an object.
 TEST(SegmentSlivers, AFarBallAloneIsAnObject) {
   synth::SceneRecipe recipe;
   recipe.layout = synth::SceneLayout::row;
