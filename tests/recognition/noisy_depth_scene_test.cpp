@@ -253,5 +253,40 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
   EXPECT_EQ(cones, 4);
 }
 
+// Twice the Kinect's noise (its other faults too), random 6 and row 1: four balls of radius 35-77
+// mm 1.3-1.6 m off. A band of a few resolutions about a plane held a ball's cap, and its outline
+// read as a circular face: a lid, for which only the cylinder, cone, frustum and other prisms were
+// tried, and three of the balls were named frusta (row 1's other, `unknown`). The sphere is now
+// tried beside such a face too: measured, those three spheres, radius within 9%, centre within
+// 6 mm (tolerance 12%, 10 mm), the fourth still `unknown`; none named another solid.
+TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  synth::CaptureOptions twice = kinect_faults();
+  twice.depth_noise = 0.004;
+  const std::vector<NoisyFrame> frames = {stored_frame(synth::SceneLayout::random, 6, twice, 3),
+                                          stored_frame(synth::SceneLayout::row, 1, twice, 3)};
+  int balls = 0, spheres = 0;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const NoisyFrame& frame = frames[k];
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy balls");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
+      if (object.solid.kind != synth::ShapeKind::sphere) continue;
+      ++balls;
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, frame.labels, object.label);
+      SCOPED_TRACE("frame " + std::to_string(k) + ", label " + std::to_string(object.label));
+      ASSERT_NE(holder, nullptr);
+      EXPECT_TRUE(holder->shape == "sphere" || holder->shape == "unknown") << holder->shape;
+      if (holder->shape != "sphere") continue;
+      ++spheres;
+      const double radius = synth::dimension(object.solid, "radius");
+      EXPECT_NEAR(holder->dimensions.front().second, radius, 0.12 * radius);
+      EXPECT_LT((holder->center - object.solid.pose.center).norm(), 0.01);
+    }
+  }
+  EXPECT_EQ(balls, 4);
+  EXPECT_EQ(spheres, 3);
+}
+
 }  // namespace
 }  // namespace cloudshape
