@@ -376,13 +376,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   }
   // Two solids of different families explaining as many points (cfg.preferred_margin), the other
   // as closely or closer (cfg.ambiguity_rms_ratio of the chosen's RMS): the points do not tell
-  // them apart. Where the key-points found a polyhedron's corners, their class breaks the tie (a
-  // noisy box's corners outlast its flat faces); where they found only a view's border points
-  // (every single view has them: "cylinder"), it is no evidence (a small ball far off under a depth
-  // camera's noise came out a cylinder), and neither solid is named. (A container's rivals were
-  // fitted to its inside as an outside.)
+  // them apart. Where the key-points found a polyhedron's corners and its solid was fitted, their
+  // class breaks the tie (a noisy box's corners outlast its flat faces); where they found only a
+  // view's border points (every single view has them: "cylinder"), or corners whose solid failed
+  // (a small ball's noisy rim gave a tetrahedron's), it is no evidence (small balls far off under a
+  // depth camera's noise came out cylinders), and neither solid is named. (A container's rivals
+  // were fitted to its inside as an outside.)
   if (chosen && !contained && cfg.ambiguity_rms_ratio > 0.0 &&
-      !polyhedron_by_corners(classification.shape) &&
+      !(polyhedron_fitted && polyhedron_by_corners(classification.shape)) &&
       chosen->second.explained >= cfg.min_inlier_fraction) {
     for (const auto& f : fitted) {
       if (same_family(f.first.shape, chosen->first.shape) ||

@@ -195,7 +195,11 @@ NoisyFrame stored_frame(synth::SceneLayout layout, std::uint64_t seed,
 // them balls and a pentagonal prism named cylinders, a cone a box) were so where a solid of another
 // family explained as many points as closely, and the key-points, finding no polyhedron's corners,
 // gave only a view's border ("cylinder") to break the tie. Such an object is now unknown
-// (solve.ambiguity_rms_ratio): those six, and none of the 40 named right.
+// (solve.ambiguity_rms_ratio): those six, and none of the 40 named right. Nor do a polyhedron's
+// corners break the tie where that polyhedron's own solid was not fitted: random seed 12 of the
+// four-object frames, a 3.6 cm ball 1.7 m off whose noisy rim gave a tetrahedron's four corners,
+// named a cylinder while a sphere explained its points alike, is the seventh; the right ones of
+// that frame stay.
 TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   synth::CaptureOptions twice = kinect_faults();
@@ -205,12 +209,13 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
     for (std::uint64_t seed = 1; seed <= 10; ++seed)
       frames.push_back(stored_frame(layout, seed, twice, 3));
   frames.push_back(stored_frame(synth::SceneLayout::row, 18, kinect_faults(), 4));
+  frames.push_back(stored_frame(synth::SceneLayout::random, 12, kinect_faults(), 4));
   const Names with = names_of(frames, cfg);
   cfg.solve.ambiguity_rms_ratio = 0.0;
   const Names without = names_of(frames, cfg);
   EXPECT_EQ(without.alike, 0);
-  EXPECT_EQ(with.alike, 6);
-  EXPECT_EQ(with.wrong, without.wrong - 6);
+  EXPECT_EQ(with.alike, 7);
+  EXPECT_EQ(with.wrong, without.wrong - 7);
   EXPECT_EQ(with.right, without.right);
 }
 
