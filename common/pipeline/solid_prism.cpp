@@ -131,11 +131,15 @@ double turn_degrees(const geometry::Polygon2& p, std::size_t i) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b)) * 180.0 / kPi;
 }
 
-// A rectangle is a box's and a regular pentagon a pentagonal prism's: those keep their names.
-bool equal_sides_and_turns(const geometry::Polygon2& p, double tolerance, double degrees) {
+// A rectangle is a box's and a regular pentagon a pentagonal prism's: those keep their names. A
+// side's length may stray `tolerance` of the mean, or `length_slack` (where the points place the
+// corners less exactly than that share).
+bool equal_sides_and_turns(const geometry::Polygon2& p, double tolerance, double degrees,
+                           double length_slack) {
   const double mean = geometry::perimeter(p) / static_cast<double>(p.size());
+  const double slack = std::max(tolerance * mean, length_slack);
   for (std::size_t i = 0; i < p.size(); ++i) {
-    if (std::abs((p[(i + 1) % p.size()] - p[i]).norm() - mean) > tolerance * mean) return false;
+    if (std::abs((p[(i + 1) % p.size()] - p[i]).norm() - mean) > slack) return false;
     if (std::abs(turn_degrees(p, i) - 360.0 / static_cast<double>(p.size())) > degrees) return false;
   }
   return true;
@@ -365,10 +369,15 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
     if (!ring[i].seen || !ring[(i + 1) % ring.size()].seen)
       right_angle_tolerance[i] *= in.cfg.prism_guessed_slack;
   if (is_rectangle(polygon, right_angle_tolerance)) return std::nullopt;
+  // Each corner is placed within the verification's tolerance (inlier_distance resolutions): under
+  // a depth camera's noise that is more than regular_tolerance of a small prism's side.
+  const double corner_slack = in.cfg.inlier_distance * in.resolution;
   if (polygon.size() == 5 &&
-      equal_sides_and_turns(polygon, slack * in.cfg.regular_tolerance, slack * in.cfg.parallel_degrees))
+      equal_sides_and_turns(polygon, slack * in.cfg.regular_tolerance,
+                            slack * in.cfg.parallel_degrees, slack * corner_slack))
     return std::nullopt;
-  const bool regular = equal_sides_and_turns(polygon, in.cfg.regular_tolerance, in.cfg.parallel_degrees);
+  const bool regular = equal_sides_and_turns(polygon, in.cfg.regular_tolerance,
+                                             in.cfg.parallel_degrees, corner_slack);
 
   // Every side is seen across its width: a tangent strip of a curved surface is narrow.
   for (std::size_t i = 0; i < ring.size() && !from_cap; ++i) {
