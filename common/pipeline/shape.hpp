@@ -18,6 +18,11 @@ inline constexpr std::array<Shape, 8> kNamedShapes = {
     Shape::box,      Shape::tetrahedron, Shape::pentagonal_prism, Shape::cone,
     Shape::cylinder, Shape::sphere,      Shape::prism,            Shape::frustum};
 
+// A solid with a curved surface.
+inline bool is_round(Shape s) {
+  return s == Shape::sphere || s == Shape::cylinder || s == Shape::cone || s == Shape::frustum;
+}
+
 // The polyhedra the key-points name from their corner counts (the classifier's first candidate):
 // where one of them is named, a round solid is only a rival hypothesis.
 inline bool polyhedron_by_corners(Shape s) {

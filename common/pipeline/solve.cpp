@@ -12,6 +12,7 @@
 #include "geometry/circle.hpp"
 #include "geometry/convex_hull.hpp"
 #include "geometry/oriented_box.hpp"
+#include "geometry/pca.hpp"
 #include "geometry/polygon.hpp"
 #include "pipeline/container.hpp"
 #include "pipeline/scan_fit.hpp"
@@ -40,6 +41,27 @@ Verification verify(const PointList& cloud, const FittedSolid& solid, double tol
   v.explained = static_cast<double>(inside) / static_cast<double>(n);
   v.rms = std::sqrt(sum / static_cast<double>(n));
   return v;
+}
+
+// Share of the points (the same sample as verify's) within `tolerance` of the plane that best
+// fits those within it: the points' plane, refitted twice to its inliers.
+double plane_share(const PointList& cloud, double tolerance, std::size_t max_samples) {
+  if (cloud.size() < 3) return 0.0;
+  const std::size_t step =
+      std::max<std::size_t>(1, cloud.size() / std::max<std::size_t>(1, max_samples));
+  std::vector<std::uint32_t> sample, inliers;
+  for (std::size_t i = 0; i < cloud.size(); i += step)
+    sample.push_back(static_cast<std::uint32_t>(i));
+  inliers = sample;
+  for (int fit = 0; fit < 3; ++fit) {
+    if (inliers.size() < 3) return 0.0;
+    const geometry::Pca pca = geometry::compute_pca(cloud, inliers);
+    const Eigen::Vector3d normal = pca.eigenvectors.col(0);
+    inliers.clear();
+    for (std::uint32_t i : sample)
+      if (std::abs(normal.dot(cloud[i] - pca.centroid)) <= tolerance) inliers.push_back(i);
+  }
+  return static_cast<double>(inliers.size()) / static_cast<double>(sample.size());
 }
 
 // Share of the 26 direction sectors around the solid's centre (in its own frame: faces,
@@ -355,6 +377,23 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
         fitted.emplace_back(std::move(*second), v);
         chosen = &fitted.back();
       }
+    }
+  }
+  // A round solid whose points a plane explains as well (within cfg.preferred_margin) shows no
+  // curvature beyond the tolerance: which way its surface bends, and how much, is not measured
+  // (one face of a tetrahedron under a depth camera's noise passed for a flat cone's hollow, and
+  // so for a container).
+  if (chosen && is_round(chosen->first.shape) &&
+      chosen->second.explained >= cfg.min_inlier_fraction) {
+    const double flat = plane_share(cloud, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    if (flat >= chosen->second.explained - cfg.preferred_margin) {
+      char buf[160];
+      std::snprintf(
+          buf, sizeof buf, "a plane explains the points as well as a %s (%.0f%% and %.0f%%)",
+          shape_name(chosen->first.shape).c_str(), 100.0 * flat, 100.0 * chosen->second.explained);
+      out.reason = (scan_lines > 0 ? lines() + ": " : std::string()) + buf;
+      out.extent = extent_of(cloud, {}, cfg, pool);
+      return out;
     }
   }
   // The chosen round solid seen from its hollow side is the inside of a container, which is what

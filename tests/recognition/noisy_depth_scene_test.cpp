@@ -326,5 +326,43 @@ TEST(NoisyDepthScene, PentagonsRegularWithinTheNoiseAreNoOtherPrism) {
   EXPECT_EQ(right, 4);
 }
 
+// Objects whose points a plane explains as well as the round solid chosen for them: one face of a
+// tetrahedron, or a cone's base, seen under a depth camera's noise. The Kinect's faults: row seed 5
+// (an 8.8 cm tetrahedron 1.4 m off, named a cylinder 3.7 cm tall) and wall seed 6 (a cone's base 1
+// m off, named a cylinder 4 mm tall); with four solids, random seed 17 (a tetrahedron's face taken
+// for a flat cone's hollow, so for a container: a cylinder 2.3 cm tall at 0.96) and row seed 12 (a
+// tetrahedron named a cylinder 11 cm wide). The curvature such a solid claims is within the
+// tolerance of a plane: the four are now unknown ("a plane explains the points as well"), and the
+// seven objects of those frames named right stay so.
+TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  struct Frame {
+    synth::SceneLayout layout;
+    std::uint64_t seed;
+    std::uint32_t count, flat_label;
+  };
+  const Frame frames[] = {{synth::SceneLayout::row, 5, 3, 30},
+                          {synth::SceneLayout::wall, 6, 3, 20},
+                          {synth::SceneLayout::random, 17, 4, 20},
+                          {synth::SceneLayout::row, 12, 4, 50}};
+  int right = 0;
+  for (const Frame& f : frames) {
+    const NoisyFrame frame = stored_frame(f.layout, f.seed, kinect_faults(), f.count);
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "flat views");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, frame.labels, object.label);
+      SCOPED_TRACE("seed " + std::to_string(f.seed) + ", label " + std::to_string(object.label));
+      ASSERT_NE(holder, nullptr);
+      right += holder->shape == synth::to_string(object.solid.kind);
+      if (object.label != f.flat_label) continue;
+      EXPECT_EQ(holder->shape, "unknown");
+      EXPECT_NE(holder->reason.find("a plane explains the points as well"), std::string::npos)
+          << holder->reason;
+    }
+  }
+  EXPECT_EQ(right, 7);
+}
+
 }  // namespace
 }  // namespace cloudshape
