@@ -177,10 +177,8 @@ Classification classify_cloud(const PointList& cloud, const PlaneSegmentation& p
   if (out.cap_plane) {
     // A circular face: a can's lid, a cup's bottom; of the solids only these have one.
     out.shape = Shape::cylinder;
-    // A regular polygon's cap reads as a circle too (a hexagonal nut): the prism stays in. So does
-    // a small ball's cap under a depth camera's noise, flat within a face's band: the sphere too
-    // (after the three the face calls for, which keep ties).
-    out.candidates = {Shape::cylinder, Shape::cone, Shape::frustum, Shape::sphere, Shape::prism};
+    // A regular polygon's cap reads as a circle too (a hexagonal nut): the prism stays in.
+    out.candidates = {Shape::cylinder, Shape::cone, Shape::frustum, Shape::prism};
     return out;
   }
   add_unique(out.candidates, out.shape);

@@ -229,8 +229,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   const auto lines = [scan_lines] {
     return "seen on " + std::to_string(scan_lines) + " scan line" + (scan_lines == 1 ? "" : "s");
   };
+  // Beside a circular face (a lid) the sphere is no candidate, but in a view (a sensor's viewpoint
+  // known) a small ball's cap under a depth camera's noise lies within a face's band and reads as
+  // one: there the sphere is tried too, after the solids the face calls for (which keep ties) and
+  // before any other prism.
+  std::vector<Shape> offered = classification.candidates;
+  if (classification.cap_plane && viewpoint &&
+      std::find(offered.begin(), offered.end(), Shape::sphere) == offered.end())
+    offered.insert(std::find(offered.begin(), offered.end(), Shape::prism), Shape::sphere);
   std::vector<Shape> candidates;
-  for (Shape shape : classification.candidates) {
+  for (Shape shape : offered) {
     if (!sphere_only || (shape == Shape::sphere && scan_lines >= 2)) candidates.push_back(shape);
   }
   if (candidates.empty()) {

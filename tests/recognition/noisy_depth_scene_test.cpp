@@ -262,8 +262,9 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
 // mm 1.3-1.6 m off. A band of a few resolutions about a plane held a ball's cap, and its outline
 // read as a circular face: a lid, for which only the cylinder, cone, frustum and other prisms were
 // tried, and three of the balls were named frusta (row 1's other, `unknown`). The sphere is now
-// tried beside such a face too: measured, those three spheres, radius within 9%, centre within
-// 6 mm (tolerance 12%, 10 mm), the fourth still `unknown`; none named another solid.
+// tried beside such a face too in a view (a sensor's viewpoint known): measured, those three
+// spheres, radius within 9%, centre within 6 mm (tolerance 12%, 10 mm), the fourth still `unknown`;
+// none named another solid.
 TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   synth::CaptureOptions twice = kinect_faults();
