@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,56 @@ NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
 
 using testing::kinect_faults;
 
+// The points as a PCD file stores them (float), as cloudshape-bench --scenes reads the frames.
+NoisyFrame stored_frame(synth::SceneLayout layout, std::uint64_t seed,
+                        const synth::CaptureOptions& options, std::uint32_t count) {
+  NoisyFrame frame = noisy_frame(layout, seed, options, count);
+  for (Point& p : frame.points) p = p.cast<float>().cast<double>();
+  return frame;
+}
+
+// A labelled solid of a frame and the report standing for it: the one holding most of its points
+// (none where no report holds any).
+struct Holding {
+  std::string where;  // "frame k, label l", for a trace
+  synth::SceneObject object;
+  std::optional<pipeline::ObjectResult> report;
+};
+
+// Every solid of the frames, of `kind` only where given, with its report.
+std::vector<Holding> holdings(const std::vector<NoisyFrame>& frames,
+                              const config::PipelineConfig& cfg,
+                              std::optional<synth::ShapeKind> kind = std::nullopt) {
+  std::vector<Holding> out;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const NoisyFrame& frame = frames[k];
+    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy frame");
+    for (const synth::SceneObject& object : frame.capture.scene.objects) {
+      if (kind && object.solid.kind != *kind) continue;
+      const pipeline::ObjectResult* holder =
+          testing::report_of_label(result.objects, frame.labels, object.label);
+      out.push_back({"frame " + std::to_string(k) + ", label " + std::to_string(object.label),
+                     object,
+                     holder ? std::optional<pipeline::ObjectResult>(*holder) : std::nullopt});
+    }
+  }
+  return out;
+}
+
+// Each cone of the frames named a cone, its radius and height within `share` of the truth.
+void expect_cones(const std::vector<Holding>& cones, double share) {
+  for (const Holding& h : cones) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    EXPECT_EQ(h.report->shape, "cone");
+    if (h.report->shape != "cone") continue;
+    const double radius = synth::dimension(h.object.solid, "radius");
+    const double height = synth::dimension(h.object.solid, "height");
+    EXPECT_NEAR(h.report->dimensions[0].second, radius, share * radius);
+    EXPECT_NEAR(h.report->dimensions[1].second, height, share * height);
+  }
+}
+
 // Random layout, seeds 2, 4, 6 and 9: five balls of radius 35-46 mm, 1.1-1.5 m off, their points
 // 3-8% of their radius apart in noise. A band of a few resolutions about a surface was narrower
 // than that noise and selected the points that happened to lie flat: a plane through a ball's cap
@@ -59,24 +110,19 @@ TEST(NoisyDepthScene, BallsStaySpheres) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   synth::CaptureOptions options;
   options.depth_noise = 0.0019;
-  int balls = 0;
-  for (std::uint64_t seed : {2, 4, 6, 9}) {
-    const NoisyFrame frame = noisy_frame(synth::SceneLayout::random, seed, options);
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy table");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      if (object.solid.kind != synth::ShapeKind::sphere) continue;
-      ++balls;
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("seed " + std::to_string(seed) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      EXPECT_EQ(holder->shape, "sphere");
-      if (holder->shape != "sphere") continue;
-      const double radius = synth::dimension(object.solid, "radius");
-      EXPECT_NEAR(holder->dimensions.front().second, radius, 0.1 * radius);
-    }
+  std::vector<NoisyFrame> frames;
+  for (std::uint64_t seed : {2, 4, 6, 9})
+    frames.push_back(noisy_frame(synth::SceneLayout::random, seed, options));
+  const std::vector<Holding> balls = holdings(frames, cfg, synth::ShapeKind::sphere);
+  for (const Holding& h : balls) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    EXPECT_EQ(h.report->shape, "sphere");
+    if (h.report->shape != "sphere") continue;
+    const double radius = synth::dimension(h.object.solid, "radius");
+    EXPECT_NEAR(h.report->dimensions.front().second, radius, 0.1 * radius);
   }
-  EXPECT_EQ(balls, 5);
+  EXPECT_EQ(balls.size(), 5u);
 }
 
 // The cones of seven such frames with the Kinect's other faults too (`--quantize --shadows
@@ -91,32 +137,16 @@ TEST(NoisyDepthScene, BallsStaySpheres) {
 // 12% (the longest: its tip region thin and noisy); tolerance 20%.
 TEST(NoisyDepthScene, ConesSeenToTheirTipStayCones) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  const synth::CaptureOptions options = kinect_faults();
-  int cones = 0;
-  const std::pair<synth::SceneLayout, std::uint64_t> frames[] = {
-      {synth::SceneLayout::random, 1}, {synth::SceneLayout::random, 2},
-      {synth::SceneLayout::row, 6},    {synth::SceneLayout::wall, 3},
-      {synth::SceneLayout::wall, 4},   {synth::SceneLayout::wall, 5},
-      {synth::SceneLayout::wall, 7}};
-  for (const auto& [layout, seed] : frames) {
-    const NoisyFrame frame = noisy_frame(layout, seed, options);
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy cones");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      if (object.solid.kind != synth::ShapeKind::cone) continue;
-      ++cones;
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("seed " + std::to_string(seed) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      EXPECT_EQ(holder->shape, "cone");
-      if (holder->shape != "cone") continue;
-      const double radius = synth::dimension(object.solid, "radius");
-      const double height = synth::dimension(object.solid, "height");
-      EXPECT_NEAR(holder->dimensions[0].second, radius, 0.2 * radius);
-      EXPECT_NEAR(holder->dimensions[1].second, height, 0.2 * height);
-    }
-  }
-  EXPECT_EQ(cones, 8);
+  std::vector<NoisyFrame> frames;
+  for (const auto& [layout, seed] :
+       {std::pair{synth::SceneLayout::random, 1}, std::pair{synth::SceneLayout::random, 2},
+        std::pair{synth::SceneLayout::row, 6}, std::pair{synth::SceneLayout::wall, 3},
+        std::pair{synth::SceneLayout::wall, 4}, std::pair{synth::SceneLayout::wall, 5},
+        std::pair{synth::SceneLayout::wall, 7}})
+    frames.push_back(noisy_frame(layout, static_cast<std::uint64_t>(seed), kinect_faults()));
+  const std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  expect_cones(cones, 0.2);
+  EXPECT_EQ(cones.size(), 8u);
 }
 
 // Stacked layout, seed 9, with the Kinect's faults as above: three boxes stacked, each turned on
@@ -181,14 +211,6 @@ Names names_of(const std::vector<NoisyFrame>& frames, const config::PipelineConf
   return out;
 }
 
-// The points as a PCD file stores them (float), as cloudshape-bench --scenes reads the frames.
-NoisyFrame stored_frame(synth::SceneLayout layout, std::uint64_t seed,
-                        const synth::CaptureOptions& options, std::uint32_t count) {
-  NoisyFrame frame = noisy_frame(layout, seed, options, count);
-  for (Point& p : frame.points) p = p.cast<float>().cast<double>();
-  return frame;
-}
-
 // Random and row layouts, seeds 1-10, with twice the Kinect's noise (`--depth-noise 0.004`, its
 // other faults too), and row seed 18 with four solids and the Kinect's own: small solids 1.3-1.8 m
 // off whose noise is a sixth to a tenth of their size. Six of the 18 named another solid (among
@@ -236,26 +258,9 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
       stored_frame(synth::SceneLayout::row, 8, twice, 3),
       stored_frame(synth::SceneLayout::wall, 12, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::wall, 14, kinect_faults(), 4)};
-  int cones = 0;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    const NoisyFrame& frame = frames[k];
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy cones");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      if (object.solid.kind != synth::ShapeKind::cone) continue;
-      ++cones;
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("frame " + std::to_string(k) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      EXPECT_EQ(holder->shape, "cone");
-      if (holder->shape != "cone") continue;
-      const double radius = synth::dimension(object.solid, "radius");
-      const double height = synth::dimension(object.solid, "height");
-      EXPECT_NEAR(holder->dimensions[0].second, radius, 0.15 * radius);
-      EXPECT_NEAR(holder->dimensions[1].second, height, 0.15 * height);
-    }
-  }
-  EXPECT_EQ(cones, 4);
+  const std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  expect_cones(cones, 0.15);
+  EXPECT_EQ(cones.size(), 4u);
 }
 
 // Twice the Kinect's noise (its other faults too), random 6 and row 1: four balls of radius 35-77
@@ -271,26 +276,19 @@ TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
   twice.depth_noise = 0.004;
   const std::vector<NoisyFrame> frames = {stored_frame(synth::SceneLayout::random, 6, twice, 3),
                                           stored_frame(synth::SceneLayout::row, 1, twice, 3)};
-  int balls = 0, spheres = 0;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    const NoisyFrame& frame = frames[k];
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy balls");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      if (object.solid.kind != synth::ShapeKind::sphere) continue;
-      ++balls;
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("frame " + std::to_string(k) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      EXPECT_TRUE(holder->shape == "sphere" || holder->shape == "unknown") << holder->shape;
-      if (holder->shape != "sphere") continue;
-      ++spheres;
-      const double radius = synth::dimension(object.solid, "radius");
-      EXPECT_NEAR(holder->dimensions.front().second, radius, 0.12 * radius);
-      EXPECT_LT((holder->center - object.solid.pose.center).norm(), 0.01);
-    }
+  const std::vector<Holding> balls = holdings(frames, cfg, synth::ShapeKind::sphere);
+  int spheres = 0;
+  for (const Holding& h : balls) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    EXPECT_TRUE(h.report->shape == "sphere" || h.report->shape == "unknown") << h.report->shape;
+    if (h.report->shape != "sphere") continue;
+    ++spheres;
+    const double radius = synth::dimension(h.object.solid, "radius");
+    EXPECT_NEAR(h.report->dimensions.front().second, radius, 0.12 * radius);
+    EXPECT_LT((h.report->center - h.object.solid.pose.center).norm(), 0.01);
   }
-  EXPECT_EQ(balls, 4);
+  EXPECT_EQ(balls.size(), 4u);
   EXPECT_EQ(spheres, 3);
 }
 
@@ -309,19 +307,13 @@ TEST(NoisyDepthScene, PentagonsRegularWithinTheNoiseAreNoOtherPrism) {
       stored_frame(synth::SceneLayout::random, 11, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::random, 3, twice, 3)};
   int pentagonal = 0, right = 0;
-  for (std::size_t k = 0; k < frames.size(); ++k) {
-    const NoisyFrame& frame = frames[k];
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "noisy prisms");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("frame " + std::to_string(k) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      right += holder->shape == synth::to_string(object.solid.kind);
-      if (object.solid.kind != synth::ShapeKind::pentagonal_prism) continue;
-      ++pentagonal;
-      EXPECT_NE(holder->shape, "prism");
-    }
+  for (const Holding& h : holdings(frames, cfg)) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    right += h.report->shape == synth::to_string(h.object.solid.kind);
+    if (h.object.solid.kind != synth::ShapeKind::pentagonal_prism) continue;
+    ++pentagonal;
+    EXPECT_NE(h.report->shape, "prism");
   }
   EXPECT_EQ(pentagonal, 3);
   EXPECT_EQ(right, 4);
@@ -337,31 +329,26 @@ TEST(NoisyDepthScene, PentagonsRegularWithinTheNoiseAreNoOtherPrism) {
 // seven objects of those frames named right stay so.
 TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  struct Frame {
-    synth::SceneLayout layout;
-    std::uint64_t seed;
-    std::uint32_t count, flat_label;
-  };
-  const Frame frames[] = {{synth::SceneLayout::row, 5, 3, 30},
-                          {synth::SceneLayout::wall, 6, 3, 20},
-                          {synth::SceneLayout::random, 17, 4, 20},
-                          {synth::SceneLayout::row, 12, 4, 50}};
-  int right = 0;
-  for (const Frame& f : frames) {
-    const NoisyFrame frame = stored_frame(f.layout, f.seed, kinect_faults(), f.count);
-    const auto result = pipeline::recognize_cloud(frame.points, frame.grid, cfg, "flat views");
-    for (const synth::SceneObject& object : frame.capture.scene.objects) {
-      const pipeline::ObjectResult* holder =
-          testing::report_of_label(result.objects, frame.labels, object.label);
-      SCOPED_TRACE("seed " + std::to_string(f.seed) + ", label " + std::to_string(object.label));
-      ASSERT_NE(holder, nullptr);
-      right += holder->shape == synth::to_string(object.solid.kind);
-      if (object.label != f.flat_label) continue;
-      EXPECT_EQ(holder->shape, "unknown");
-      EXPECT_NE(holder->reason.find("a plane explains the points as well"), std::string::npos)
-          << holder->reason;
-    }
+  const std::vector<NoisyFrame> frames = {
+      stored_frame(synth::SceneLayout::row, 5, kinect_faults(), 3),
+      stored_frame(synth::SceneLayout::wall, 6, kinect_faults(), 3),
+      stored_frame(synth::SceneLayout::random, 17, kinect_faults(), 4),
+      stored_frame(synth::SceneLayout::row, 12, kinect_faults(), 4)};
+  // The flat view's label in each frame, in order.
+  const std::vector<std::string> flat = {"frame 0, label 30", "frame 1, label 20",
+                                         "frame 2, label 20", "frame 3, label 50"};
+  int right = 0, flats = 0;
+  for (const Holding& h : holdings(frames, cfg)) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    right += h.report->shape == synth::to_string(h.object.solid.kind);
+    if (std::find(flat.begin(), flat.end(), h.where) == flat.end()) continue;
+    ++flats;
+    EXPECT_EQ(h.report->shape, "unknown");
+    EXPECT_NE(h.report->reason.find("a plane explains the points as well"), std::string::npos)
+        << h.report->reason;
   }
+  EXPECT_EQ(flats, 4);
   EXPECT_EQ(right, 7);
 }
 
