@@ -26,11 +26,16 @@ struct Verification {
   double rms = 0.0;        // RMS surface distance, each distance capped at the tolerance
 };
 
+// Every step-th point of `size`, about `max_samples` of them (all when fewer).
+std::size_t sample_step(std::size_t size, std::size_t max_samples) {
+  return std::max<std::size_t>(1, size / std::max<std::size_t>(1, max_samples));
+}
+
 Verification verify(const PointList& cloud, const FittedSolid& solid, double tolerance,
                     std::size_t max_samples) {
   Verification v;
   if (cloud.empty()) return v;
-  const std::size_t step = std::max<std::size_t>(1, cloud.size() / std::max<std::size_t>(1, max_samples));
+  const std::size_t step = sample_step(cloud.size(), max_samples);
   std::size_t n = 0, inside = 0;
   double sum = 0.0;
   for (std::size_t i = 0; i < cloud.size(); i += step, ++n) {
@@ -47,8 +52,7 @@ Verification verify(const PointList& cloud, const FittedSolid& solid, double tol
 // fits those within it: the points' plane, refitted twice to its inliers.
 double plane_share(const PointList& cloud, double tolerance, std::size_t max_samples) {
   if (cloud.size() < 3) return 0.0;
-  const std::size_t step =
-      std::max<std::size_t>(1, cloud.size() / std::max<std::size_t>(1, max_samples));
+  const std::size_t step = sample_step(cloud.size(), max_samples);
   std::vector<std::uint32_t> sample, inliers;
   for (std::size_t i = 0; i < cloud.size(); i += step)
     sample.push_back(static_cast<std::uint32_t>(i));
@@ -217,10 +221,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
   for (const Point& p : cloud) out.center += p / static_cast<double>(std::max<std::size_t>(1, cloud.size()));
-  if (classification.candidates.empty()) {
-    out.reason = classification.reason.empty() ? "no solid found" : classification.reason;
+  // No solid named, for `reason`: the extent is the points' own.
+  const auto unknown = [&](std::string reason) {
+    out.reason = std::move(reason);
     out.extent = extent_of(cloud, {}, cfg, pool);
     return out;
+  };
+  if (classification.candidates.empty()) {
+    return unknown(classification.reason.empty() ? "no solid found" : classification.reason);
   }
   // On two scan lines only a sphere is determined; one line (segment.scan_object_min_beams
   // below 2) fixes no solid at all.
@@ -228,6 +236,10 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       scan_lines > 0 && static_cast<std::int64_t>(scan_lines) < cfg.solid_min_scan_lines;
   const auto lines = [scan_lines] {
     return "seen on " + std::to_string(scan_lines) + " scan line" + (scan_lines == 1 ? "" : "s");
+  };
+  // A reason, preceded by the scan lines where the object is a lidar's.
+  const auto on_lines = [&](const std::string& reason) {
+    return (scan_lines > 0 ? lines() + ": " : std::string()) + reason;
   };
   // Beside a circular face (a lid) the sphere is no candidate, but in a view (a sensor's viewpoint
   // known) a small ball's cap under a depth camera's noise lies within a face's band and reads as
@@ -242,10 +254,10 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     if (!sphere_only || (shape == Shape::sphere && scan_lines >= 2)) candidates.push_back(shape);
   }
   if (candidates.empty()) {
-    out.reason = scan_lines == 1 ? lines() + ": no solid is determined"
-                                 : lines() + ": only a sphere is determined, and the points were not classed as one";
-    out.extent = extent_of(cloud, {}, cfg, pool);
-    return out;
+    return unknown(
+        scan_lines == 1
+            ? lines() + ": no solid is determined"
+            : lines() + ": only a sphere is determined, and the points were not classed as one");
   }
   SolveInput input{cloud, planes, keypoints, classification, resolution, cfg};
   input.tree = tree;
@@ -399,9 +411,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(
           buf, sizeof buf, "a plane explains the points as well as a %s (%.0f%% and %.0f%%)",
           shape_name(chosen->first.shape).c_str(), 100.0 * flat, 100.0 * chosen->second.explained);
-      out.reason = (scan_lines > 0 ? lines() + ": " : std::string()) + buf;
-      out.extent = extent_of(cloud, {}, cfg, pool);
-      return out;
+      return unknown(on_lines(buf));
     }
   }
   // The chosen round solid seen from its hollow side is the inside of a container, which is what
@@ -409,9 +419,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   bool contained = false;
   if (chosen && viewpoint && seen_from_inside(cloud, chosen->first, *viewpoint, 0.5 * resolution, cfg)) {
     if (sphere_only) {
-      out.reason = lines() + ": a hollow side, and no container is determined";
-      out.extent = extent_of(cloud, {}, cfg, pool);
-      return out;
+      return unknown(lines() + ": a hollow side, and no container is determined");
     }
     auto container = container_of_hollow(cloud, chosen->first, cfg);
     if (container && detail::plausible(*container, diameter, cfg.max_size_ratio)) {
@@ -441,9 +449,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(buf, sizeof buf, "a %s and a %s explain the points alike (%.0f%% and %.0f%%)",
                     shape_name(chosen->first.shape).c_str(), shape_name(f.first.shape).c_str(),
                     100.0 * chosen->second.explained, 100.0 * f.second.explained);
-      out.reason = (scan_lines > 0 ? lines() + ": " : std::string()) + buf;
-      out.extent = extent_of(cloud, {}, cfg, pool);
-      return out;
+      return unknown(on_lines(buf));
     }
   }
   if (!chosen || chosen->second.explained < cfg.min_inlier_fraction) {
@@ -453,9 +459,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                     shape_name(chosen->first.shape).c_str(), 100.0 * chosen->second.explained);
     else
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
-    out.reason = sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf);
-    out.extent = extent_of(cloud, {}, cfg, pool);
-    return out;
+    return unknown(sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf));
   }
   // A lidar object's solid must lie within the points' own noise of them: on a few scan lines a
   // wrong solid still passes within inlier_distance of most points (the spacing along a ring sets
@@ -472,9 +476,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(buf, sizeof buf,
                     ": the best solid (%s) leaves the points %.1f times their noise from it",
                     shape_name(chosen->first.shape).c_str(), noise > 0.0 ? scatter / noise : 0.0);
-      out.reason = lines() + buf;
-      out.extent = extent_of(cloud, {}, cfg, pool);
-      return out;
+      return unknown(lines() + buf);
     }
   }
   const FittedSolid& s = chosen->first;
