@@ -183,6 +183,32 @@ double flat_side_share(const FittedSolid& s, const PlaneSegmentation& planes, co
   return static_cast<double>(tapered ? large : flat) / static_cast<double>(points - caps);
 }
 
+// A named dimension of a fitted solid (0 where it has none).
+double dimension(const FittedSolid& s, const std::string& name) {
+  for (const auto& [key, value] : s.dimensions)
+    if (key == name) return value;
+  return 0.0;
+}
+
+// Solids of one family (same_family), except a cylinder and a frustum whose side leans from its
+// axis by more than `lean_degrees` and whose radii differ by more than the band its points are
+// explained within (two tolerances): no cylinder then lies within the tolerance of that frustum
+// all along, and the two are different answers (a cone lying on a table, its tip lost under a
+// depth camera's noise, whose near side a tilted cylinder follows; a bottle's slight taper is a
+// cylinder's).
+bool same_kind(const FittedSolid& a, const FittedSolid& b, double tolerance, double lean_degrees) {
+  if (!same_family(a.shape, b.shape)) return false;
+  const double max_lean = std::tan(lean_degrees * 3.14159265358979323846 / 180.0);
+  const auto tapers = [&](const FittedSolid& f) {
+    const double narrowing = dimension(f, "radius") - dimension(f, "top_radius");
+    return f.shape == Shape::frustum && narrowing > 2.0 * tolerance &&
+           narrowing > max_lean * dimension(f, "height");
+  };
+  const bool cylinder_and_frustum = (a.shape == Shape::cylinder && b.shape == Shape::frustum) ||
+                                    (a.shape == Shape::frustum && b.shape == Shape::cylinder);
+  return !(cylinder_and_frustum && (tapers(a) || tapers(b)));
+}
+
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
                  const config::SolveConfig& cfg, parallel::ThreadPool* pool) {
   const geometry::OrientedBox box = geometry::oriented_bounding_box(
@@ -429,19 +455,19 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       contained = true;
     }
   }
-  // Two solids of different families explaining as many points (cfg.preferred_margin), the other
-  // as closely or closer (cfg.ambiguity_rms_ratio of the chosen's RMS): the points do not tell
-  // them apart. Where the key-points found a polyhedron's corners and its solid was fitted, their
-  // class breaks the tie (a noisy box's corners outlast its flat faces); where they found only a
-  // view's border points (every single view has them: "cylinder"), or corners whose solid failed
-  // (a small ball's noisy rim gave a tetrahedron's), it is no evidence (small balls far off under a
-  // depth camera's noise came out cylinders), and neither solid is named. (A container's rivals
-  // were fitted to its inside as an outside.)
+  // Two solids of different kinds (same_kind) explaining as many points (cfg.preferred_margin), the
+  // other as closely or closer (cfg.ambiguity_rms_ratio of the chosen's RMS): the points do not
+  // tell them apart. Where the key-points found a polyhedron's corners and its solid was fitted,
+  // their class breaks the tie (a noisy box's corners outlast its flat faces); where they found
+  // only a view's border points (every single view has them: "cylinder"), or corners whose solid
+  // failed (a small ball's noisy rim gave a tetrahedron's), it is no evidence (small balls far off
+  // under a depth camera's noise came out cylinders), and neither solid is named. (A container's
+  // rivals were fitted to its inside as an outside.)
   if (chosen && !contained && cfg.ambiguity_rms_ratio > 0.0 &&
       !(polyhedron_fitted && polyhedron_by_corners(classification.shape)) &&
       chosen->second.explained >= cfg.min_inlier_fraction) {
     for (const auto& f : fitted) {
-      if (same_family(f.first.shape, chosen->first.shape) ||
+      if (same_kind(f.first, chosen->first, tolerance, cfg.parallel_degrees) ||
           score(f) < score(*chosen) - cfg.preferred_margin ||
           !(f.second.rms <= cfg.ambiguity_rms_ratio * chosen->second.rms))
         continue;

@@ -221,7 +221,8 @@ Names names_of(const std::vector<NoisyFrame>& frames, const config::PipelineConf
 // corners break the tie where that polyhedron's own solid was not fitted: random seed 12 of the
 // four-object frames, a 3.6 cm ball 1.7 m off whose noisy rim gave a tetrahedron's four corners,
 // named a cylinder while a sphere explained its points alike, is the seventh; the right ones of
-// that frame stay.
+// that frame stay. The eighth, row seed 2's cone lying with its tip lost, a cylinder and a frustum
+// alike (ConesATiltedCylinderFollowsAreNotNamedCylinders).
 TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   synth::CaptureOptions twice = kinect_faults();
@@ -236,8 +237,8 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   cfg.solve.ambiguity_rms_ratio = 0.0;
   const Names without = names_of(frames, cfg);
   EXPECT_EQ(without.alike, 0);
-  EXPECT_EQ(with.alike, 7);
-  EXPECT_EQ(with.wrong, without.wrong - 7);
+  EXPECT_EQ(with.alike, 8);
+  EXPECT_EQ(with.wrong, without.wrong - 8);
   EXPECT_EQ(with.right, without.right);
 }
 
@@ -350,6 +351,50 @@ TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
   }
   EXPECT_EQ(flats, 4);
   EXPECT_EQ(right, 7);
+}
+
+// Cones lying on the table with their tip lost, seen from the side under the Kinect's faults: row
+// seed 2 (three solids), random 15 and wall 18 (four solids). A cylinder tilted to follow the near
+// side explained 98% of the points within the tolerance, a frustum narrowing from 45 to 14 mm every
+// point; a cylinder and a frustum were one family, the cylinder the simpler answer, and the three
+// were named cylinders. A frustum whose side leans by more than solve.parallel_degrees and whose
+// radii differ by more than two tolerances is now another answer than a cylinder: the three are
+// unknown, and the five objects of those frames named right stay so.
+TEST(NoisyDepthScene, ConesATiltedCylinderFollowsAreNotNamedCylinders) {
+  auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  const std::vector<NoisyFrame> frames = {
+      stored_frame(synth::SceneLayout::row, 2, kinect_faults(), 3),
+      stored_frame(synth::SceneLayout::random, 15, kinect_faults(), 4),
+      stored_frame(synth::SceneLayout::wall, 18, kinect_faults(), 4)};
+  const std::vector<std::string> lying = {"frame 0, label 20", "frame 1, label 40",
+                                          "frame 2, label 50"};
+  const auto lying_names = [&](const std::vector<Holding>& all, int& right) {
+    std::vector<std::string> names;
+    right = 0;
+    for (const Holding& h : all) {
+      SCOPED_TRACE(h.where);
+      EXPECT_TRUE(h.report.has_value());
+      if (!h.report) continue;
+      if (std::find(lying.begin(), lying.end(), h.where) != lying.end()) {
+        names.push_back(h.report->shape);
+        if (h.report->shape == "unknown")
+          EXPECT_NE(h.report->reason.find("a cylinder and a frustum explain the points alike"),
+                    std::string::npos)
+              << h.report->reason;
+      } else {
+        right += h.report->shape == synth::to_string(h.object.solid.kind);
+      }
+    }
+    return names;
+  };
+  int right = 0, right_without = 0;
+  const std::vector<std::string> with = lying_names(holdings(frames, cfg), right);
+  cfg.solve.ambiguity_rms_ratio = 0.0;
+  const std::vector<std::string> without = lying_names(holdings(frames, cfg), right_without);
+  EXPECT_EQ(with, std::vector<std::string>(3, "unknown"));
+  EXPECT_EQ(without, std::vector<std::string>(3, "cylinder"));
+  EXPECT_EQ(right, 5);
+  EXPECT_EQ(right_without, right);
 }
 
 }  // namespace
