@@ -361,6 +361,19 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     if (!detail::frustum_may_matter(explained_by_fits(), cfg.preferred_margin)) continue;
     solid_of[i] = fit_solid(candidates[i], input);
     admit(i, solid_of[i]);
+    // The cone the frustum's side comes to (cone_closing_frustum) is the cone's fit too, where it
+    // explains more than the cone's own: a small cone whose tip the noise blurred is fitted by a
+    // frustum with a top of about the tolerance, and the frustum is chosen only where no solid with
+    // a parameter fewer explains nearly as much.
+    const auto cone_slot = std::find(candidates.begin(), candidates.end(), Shape::cone);
+    if (!fit_of[i] || cone_slot == candidates.end()) continue;
+    const auto c = static_cast<std::size_t>(cone_slot - candidates.begin());
+    std::optional<FittedSolid> closed = cone_closing_frustum(input, fit_of[i]->first);
+    if (!admissible(closed)) continue;
+    const Verification v =
+        verify(cloud, *closed, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    if (!fit_of[c] || v.explained > fit_of[c]->second.explained)
+      fit_of[c].emplace(std::move(*closed), v);
   }
   // What a solid explains, less what its free lines bought: a prism side no face shows is fitted
   // to its cap's border alone, and a real box's ragged or rounded border gives such a prism a few

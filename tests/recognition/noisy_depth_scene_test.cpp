@@ -353,21 +353,22 @@ TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
   EXPECT_EQ(right, 7);
 }
 
-// Cones lying on the table with their tip lost, seen from the side under the Kinect's faults: row
-// seed 2 (three solids), random 15 and wall 18 (four solids). A cylinder tilted to follow the near
-// side explained 98% of the points within the tolerance, a frustum narrowing from 45 to 14 mm every
-// point; a cylinder and a frustum were one family, the cylinder the simpler answer, and the three
-// were named cylinders. A frustum whose side leans by more than solve.parallel_degrees and whose
-// radii differ by more than two tolerances is now another answer than a cylinder: the three are
-// unknown, and the five objects of those frames named right stay so.
+// Cones lying on the table with their tip lost, seen from the side: random seed 15 of the
+// four-object frames (the Kinect's faults) and row seed 2 at twice its noise. A cylinder tilted to
+// follow the near side explained 94-98% of the points within the tolerance, a frustum narrowing
+// from 45 to 14 mm 95-100%; a cylinder and a frustum were one family, the cylinder the simpler
+// answer, and both were named cylinders. A frustum whose side leans by more than
+// solve.parallel_degrees and whose radii differ by more than two tolerances is now another answer
+// than a cylinder: both unknown, and the three objects of those frames named right stay so
+// (random 15's other cones are left: one seen nearly base-on, a cylinder; one a frustum).
 TEST(NoisyDepthScene, ConesATiltedCylinderFollowsAreNotNamedCylinders) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  synth::CaptureOptions twice = kinect_faults();
+  twice.depth_noise = 0.004;
   const std::vector<NoisyFrame> frames = {
-      stored_frame(synth::SceneLayout::row, 2, kinect_faults(), 3),
       stored_frame(synth::SceneLayout::random, 15, kinect_faults(), 4),
-      stored_frame(synth::SceneLayout::wall, 18, kinect_faults(), 4)};
-  const std::vector<std::string> lying = {"frame 0, label 20", "frame 1, label 40",
-                                          "frame 2, label 50"};
+      stored_frame(synth::SceneLayout::row, 2, twice, 3)};
+  const std::vector<std::string> lying = {"frame 0, label 40", "frame 1, label 20"};
   const auto lying_names = [&](const std::vector<Holding>& all, int& right) {
     std::vector<std::string> names;
     right = 0;
@@ -391,10 +392,42 @@ TEST(NoisyDepthScene, ConesATiltedCylinderFollowsAreNotNamedCylinders) {
   const std::vector<std::string> with = lying_names(holdings(frames, cfg), right);
   cfg.solve.ambiguity_rms_ratio = 0.0;
   const std::vector<std::string> without = lying_names(holdings(frames, cfg), right_without);
-  EXPECT_EQ(with, std::vector<std::string>(3, "unknown"));
-  EXPECT_EQ(without, std::vector<std::string>(3, "cylinder"));
-  EXPECT_EQ(right, 5);
+  EXPECT_EQ(with, std::vector<std::string>(2, "unknown"));
+  EXPECT_EQ(without, std::vector<std::string>(2, "cylinder"));
+  EXPECT_EQ(right, 3);
   EXPECT_EQ(right_without, right);
+}
+
+// Cones whose tip the segmentation lost under the Kinect's faults: row seeds 9 and 2 (three
+// solids), row 16 and wall 18 (four solids), and row 6 at twice the noise. The points about a
+// tip lie off the axis on every side, the side fitted through them ends in a top of 8-12 mm
+// (about the tolerance), and the three seen to that top were named frusta (row 2 and wall 18
+// unknown: a tilted cylinder explained them alike). The cone that frustum's side comes to is now
+// the cone's fit too, where the points reach within solve.apex_gap of its apex: measured, every one
+// a cone, radius within 7%, height 3-21% long (the side's slope follows the tip's points);
+// tolerances 10% and 25%.
+TEST(NoisyDepthScene, ConesWhoseTipIsLostAreNoFrusta) {
+  const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  synth::CaptureOptions twice = kinect_faults();
+  twice.depth_noise = 0.004;
+  const std::vector<NoisyFrame> frames = {
+      stored_frame(synth::SceneLayout::row, 9, kinect_faults(), 3),
+      stored_frame(synth::SceneLayout::row, 2, kinect_faults(), 3),
+      stored_frame(synth::SceneLayout::row, 16, kinect_faults(), 4),
+      stored_frame(synth::SceneLayout::wall, 18, kinect_faults(), 4),
+      stored_frame(synth::SceneLayout::row, 6, twice, 3)};
+  const std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  EXPECT_EQ(cones.size(), 6u);  // row 9 holds two
+  for (const Holding& h : cones) {
+    SCOPED_TRACE(h.where);
+    ASSERT_TRUE(h.report.has_value());
+    ASSERT_EQ(h.report->shape, "cone");
+    const double radius = synth::dimension(h.object.solid, "radius");
+    const double height = synth::dimension(h.object.solid, "height");
+    EXPECT_NEAR(h.report->dimensions[0].second, radius, 0.1 * radius);
+    EXPECT_GE(h.report->dimensions[1].second, 0.9 * height);
+    EXPECT_LE(h.report->dimensions[1].second, 1.25 * height);
+  }
 }
 
 }  // namespace
