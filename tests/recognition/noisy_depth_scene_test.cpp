@@ -49,6 +49,13 @@ NoisyFrame noisy_frame(synth::SceneLayout layout, std::uint64_t seed,
 
 using testing::kinect_faults;
 
+// The Kinect's faults at twice its depth noise (`--depth-noise 0.004`).
+synth::CaptureOptions twice_the_noise() {
+  synth::CaptureOptions options = kinect_faults();
+  options.depth_noise = 0.004;
+  return options;
+}
+
 // The points as a PCD file stores them (float), as cloudshape-bench --scenes reads the frames.
 NoisyFrame stored_frame(synth::SceneLayout layout, std::uint64_t seed,
                         const synth::CaptureOptions& options, std::uint32_t count) {
@@ -225,8 +232,7 @@ Names names_of(const std::vector<NoisyFrame>& frames, const config::PipelineConf
 // alike (ConesATiltedCylinderFollowsAreNotNamedCylinders).
 TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   std::vector<NoisyFrame> frames;
   for (synth::SceneLayout layout : {synth::SceneLayout::random, synth::SceneLayout::row})
     for (std::uint64_t seed = 1; seed <= 10; ++seed)
@@ -252,8 +258,7 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
 // measured, every one a cone, radius within 10% and height within 7%; tolerance 15%.
 TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   const std::vector<NoisyFrame> frames = {
       stored_frame(synth::SceneLayout::random, 10, twice, 3),
       stored_frame(synth::SceneLayout::row, 8, twice, 3),
@@ -273,8 +278,7 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
 // none named another solid.
 TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   const std::vector<NoisyFrame> frames = {stored_frame(synth::SceneLayout::random, 6, twice, 3),
                                           stored_frame(synth::SceneLayout::row, 1, twice, 3)};
   const std::vector<Holding> balls = holdings(frames, cfg, synth::ShapeKind::sphere);
@@ -302,8 +306,7 @@ TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
 // `unknown`: the pentagonal prism's own fit fails there); the four objects named right stay so.
 TEST(NoisyDepthScene, PentagonsRegularWithinTheNoiseAreNoOtherPrism) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   const std::vector<NoisyFrame> frames = {
       stored_frame(synth::SceneLayout::random, 11, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::random, 3, twice, 3)};
@@ -363,8 +366,7 @@ TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
 // (random 15's other cones are left: one seen nearly base-on, a cylinder; one a frustum).
 TEST(NoisyDepthScene, ConesATiltedCylinderFollowsAreNotNamedCylinders) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   const std::vector<NoisyFrame> frames = {
       stored_frame(synth::SceneLayout::random, 15, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::row, 2, twice, 3)};
@@ -408,8 +410,7 @@ TEST(NoisyDepthScene, ConesATiltedCylinderFollowsAreNotNamedCylinders) {
 // tolerances 10% and 25%.
 TEST(NoisyDepthScene, ConesWhoseTipIsLostAreNoFrusta) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
-  synth::CaptureOptions twice = kinect_faults();
-  twice.depth_noise = 0.004;
+  const synth::CaptureOptions twice = twice_the_noise();
   const std::vector<NoisyFrame> frames = {
       stored_frame(synth::SceneLayout::row, 9, kinect_faults(), 3),
       stored_frame(synth::SceneLayout::row, 2, kinect_faults(), 3),
