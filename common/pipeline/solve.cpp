@@ -125,6 +125,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
         verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
     fit_of[i].emplace(std::move(*solid), v);
   };
+  // Another fit of candidate i's solid, kept where it explains more points than the slot holds.
+  const auto keep_if_more = [&](std::size_t i, std::optional<FittedSolid>& solid) {
+    if (!admissible(solid)) return;
+    const Verification v =
+        verify(cloud, *solid, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    if (v.explained > (fit_of[i] ? fit_of[i]->second.explained : 0.0))
+      fit_of[i].emplace(std::move(*solid), v);
+  };
   std::vector<std::size_t> others;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (candidates[i] != Shape::frustum) others.push_back(i);
@@ -165,10 +173,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
                    !detail::frustum_may_matter(explained, cfg.preferred_margin)))
       continue;
     std::optional<FittedSolid> from_side = fit_cone_from_side(input);
-    if (!admissible(from_side)) continue;
-    const Verification v =
-        verify(cloud, *from_side, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-    if (v.explained > cone_share) fit_of[i].emplace(std::move(*from_side), v);
+    keep_if_more(i, from_side);
   }
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     if (candidates[i] != Shape::frustum) continue;
@@ -181,13 +186,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
     // a parameter fewer explains nearly as much.
     const auto cone_slot = std::find(candidates.begin(), candidates.end(), Shape::cone);
     if (!fit_of[i] || cone_slot == candidates.end()) continue;
-    const auto c = static_cast<std::size_t>(cone_slot - candidates.begin());
     std::optional<FittedSolid> closed = cone_closing_frustum(input, fit_of[i]->first);
-    if (!admissible(closed)) continue;
-    const Verification v =
-        verify(cloud, *closed, tolerance, static_cast<std::size_t>(cfg.verify_samples));
-    if (!fit_of[c] || v.explained > fit_of[c]->second.explained)
-      fit_of[c].emplace(std::move(*closed), v);
+    keep_if_more(static_cast<std::size_t>(cone_slot - candidates.begin()), closed);
   }
   // What a solid explains, less what its free lines bought: a prism side no face shows is fitted
   // to its cap's border alone, and a real box's ragged or rounded border gives such a prism a few
