@@ -2,6 +2,10 @@
 // Side, height, centre, the axis (sign free) and the pentagon's turn about it within tolerances.
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <random>
+#include <string>
+
 #include "positive_support.hpp"
 #include "synth/solid_geometry.hpp"
 
@@ -69,6 +73,25 @@ TEST(PentagonalPrismParameters, SingleViewOfThreeSidesAndACapNoisy) {
         return seen_from(side_normal(truth, 2) + 0.6 * truth.pose.axes.row(0).transpose(), 0.005);
       },
       true, kSingleViewNoisy);
+}
+
+// The accuracy's outliers condition at its largest clouds: 200 000 points, noise sigma 1% of size
+// and 3% outliers, a flat prism (side 58.78, height 43.14, as its cloud 19). A side's plane then
+// holds its neighbours' noisy points near each edge and outliers across it, and spans up to 19%
+// more than the side: while every seen side had to be no wider than the side and its neighbours'
+// bands, five of these eight were named cylinders or unknown. That test is made only where a side's
+// end placed a hidden neighbour (between seen sides their positions fix the pentagon): measured,
+// all eight pentagonal prisms, side within 1.1%, height within 3.1% (the caps' planes in that
+// noise), axis within 1.6 deg (tolerances 5% and 3 deg).
+TEST(PentagonalPrismParameters, WholeUnderNoiseAndOutliersSidesMaySpanMore) {
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    std::mt19937_64 rng(seed);
+    const synth::SolidSpec truth = synth::make_solid(synth::ShapeKind::pentagonal_prism,
+                                                     {58.78, 43.14}, random_pose(rng, 58.78));
+    const Condition condition{"noise 1% and 3% outliers", 200000, 0.01, 0.03, std::nullopt};
+    expect_recognised(make_cloud(truth, condition, seed), truth, false, {0.05, 0.01, 3.0},
+                      "seed " + std::to_string(seed));
+  }
 }
 
 }  // namespace
