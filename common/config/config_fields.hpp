@@ -76,6 +76,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_hypotheses", c.structure_hypotheses);
   f("contact_noise_sigmas", c.contact_noise_sigmas);
   f("contact_min_band", c.contact_min_band);
+  f("camera_facing_share", c.camera_facing_share);
   f("remainder_refine", c.remainder_refine);
   f("fragment_max_width", c.fragment_max_width);
   f("fragment_min_elongation", c.fragment_min_elongation);

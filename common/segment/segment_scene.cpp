@@ -136,6 +136,20 @@ bool seen_by_camera(const PointList& points, const std::vector<StructurePlane>& 
          0.25 * geometry::bounding_box(points).diagonal();
 }
 
+// Whether at least `share` of the nodes left in (not `removed`) face the origin, their normals
+// turned out of their connected parts (orient_normals_outward, done here): what a camera at the
+// origin sees faces it, while an origin inside or behind the object sees the backs of its faces.
+bool facing_the_origin(NeighbourGraph& g, const std::vector<char>& removed, double share) {
+  orient_normals_outward(g, removed);
+  std::size_t left = 0, facing = 0;
+  for (std::uint32_t n = 0; n < g.size(); ++n) {
+    if (removed[n]) continue;
+    ++left;
+    if (g.normals[n].dot(g.nodes[n]) < 0.0) ++facing;
+  }
+  return static_cast<double>(facing) >= share * static_cast<double>(left);
+}
+
 // One object holding all the points but fewer than cfg.min_object_nodes of them: so few points
 // make fewer nodes than an object needs at any resolution, so nothing the scene's finer graph
 // could keep was left out.
@@ -190,10 +204,13 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
     }
   }
   // A depth camera's frame without its grid (downsampled, or never in raster order): every point
-  // in front of the camera's plane and the support far on the camera's side. Its normals then
-  // face the camera, as an organized frame's do, and the depth image's segmentation rules hold.
-  const bool camera =
-      !grid.organized() && !g.viewpoint && !isolated && seen_by_camera(points, out.structure);
+  // in front of the camera's plane, the support far on the camera's side, and what stands on it
+  // facing the camera (cfg.camera_facing_share: a YCB brick seen from elsewhere, its origin inside
+  // it, passed for a camera's view, and a face came apart from the rest). Its normals then face the
+  // camera, as an organized frame's do, and the depth image's segmentation rules hold.
+  const bool camera = !grid.organized() && !g.viewpoint && !isolated &&
+                      seen_by_camera(points, out.structure) &&
+                      facing_the_origin(g, removed, cfg.camera_facing_share);
   if (camera) {
     orient_to_viewpoint(g, Point::Zero());
     out.viewpoint = g.viewpoint;
