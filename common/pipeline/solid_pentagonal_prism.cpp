@@ -223,15 +223,20 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   if (!(apothem > 0.0) || !sol.allFinite()) return std::nullopt;
   const Point on_axis = origin + sol(0) * u + sol(1) * v;
 
+  // Whether a cap is seen at the end `up` (along the axis) or the other, however many planes
+  // noise split it into.
+  const auto cap_seen = [&](bool up) {
+    return std::any_of(found->caps.begin(), found->caps.end(), [&](const DetectedPlane* c) {
+      return (c->plane.normal.dot(axis) > 0) == up;
+    });
+  };
   // Height: a cap where one is seen, else where the seen sides' own points end along the axis (the
   // farthest of them: a side may be hidden in part), as for the hidden sides above: the points'
   // end there is a depth camera's noise and flying pixels, 10-17% beyond a Kinect's prisms.
   auto [lo, hi] = detail::extrusion_extent(in, found->caps, axis);
   const double points_height = hi - lo;
   for (const bool up : {true, false}) {
-    if (std::any_of(found->caps.begin(), found->caps.end(),
-                    [&](const DetectedPlane* c) { return (c->plane.normal.dot(axis) > 0) == up; }))
-      continue;
+    if (cap_seen(up)) continue;
     const Eigen::Vector3d along = up ? axis : Eigen::Vector3d(-axis);
     double end = -std::numeric_limits<double>::infinity();
     for (int k = 0; k < 5; ++k)
@@ -274,10 +279,8 @@ std::optional<FittedSolid> fit_pentagonal_prism(const SolveInput& in) {
   // angle fit a rhombic prism as well; its cap, seen, shows four corners. Each end once, however
   // many planes noise split its cap into.
   for (const bool up : {true, false}) {
-    const bool seen = std::any_of(found->caps.begin(), found->caps.end(),
-                                  [&](const DetectedPlane* c) { return (c->plane.normal.dot(axis) > 0) == up; });
-    if (seen && cap_fill(in, on_axis, axis, u, v, up ? hi : lo, apothem, in.cfg.inlier_distance * in.resolution) <
-                    in.cfg.cap_section_fill)
+    if (cap_seen(up) && cap_fill(in, on_axis, axis, u, v, up ? hi : lo, apothem,
+                                 in.cfg.inlier_distance * in.resolution) < in.cfg.cap_section_fill)
       return std::nullopt;
   }
   FittedSolid out;

@@ -137,10 +137,9 @@ bool seen_by_camera(const PointList& points, const std::vector<StructurePlane>& 
 }
 
 // Whether at least `share` of the nodes left in (not `removed`) face the origin, their normals
-// turned out of their connected parts (orient_normals_outward, done here): what a camera at the
-// origin sees faces it, while an origin inside or behind the object sees the backs of its faces.
-bool facing_the_origin(NeighbourGraph& g, const std::vector<char>& removed, double share) {
-  orient_normals_outward(g, removed);
+// turned out of their connected parts (orient_normals_outward): what a camera at the origin sees
+// faces it, while an origin inside or behind the object sees the backs of its faces.
+bool facing_the_origin(const NeighbourGraph& g, const std::vector<char>& removed, double share) {
   std::size_t left = 0, facing = 0;
   for (std::uint32_t n = 0; n < g.size(); ++n) {
     if (removed[n]) continue;
@@ -208,7 +207,9 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
   // facing the camera (cfg.camera_facing_share: a YCB brick seen from elsewhere, its origin inside
   // it, passed for a camera's view, and a face came apart from the rest). Its normals then face the
   // camera, as an organized frame's do, and the depth image's segmentation rules hold.
-  const bool camera = !grid.organized() && !g.viewpoint && !isolated &&
+  const bool viewed = g.viewpoint.has_value();
+  if (!viewed) orient_normals_outward(g, removed);
+  const bool camera = !grid.organized() && !viewed && !isolated &&
                       seen_by_camera(points, out.structure) &&
                       facing_the_origin(g, removed, cfg.camera_facing_share);
   if (camera) {
@@ -216,7 +217,6 @@ SceneSegmentation segment_graph(NeighbourGraph g, bool isolated, const PointList
     out.viewpoint = g.viewpoint;
     out.camera_view = true;
   }
-  if (!g.viewpoint) orient_normals_outward(g, removed);
   std::vector<std::int32_t> label = convex_segments(g, removed, cfg, grid.organized() || camera);
   join_cavities(g, label, cfg);
 
