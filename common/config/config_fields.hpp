@@ -159,6 +159,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("sector_min_share", c.sector_min_share);
   f("verify_samples", c.verify_samples);
   f("preferred_margin", c.preferred_margin);
+  f("flat_noise_sigmas", c.flat_noise_sigmas);
   f("guessed_side_cost", c.guessed_side_cost);
   f("closer_fit_margin", c.closer_fit_margin);
   f("ambiguity_rms_ratio", c.ambiguity_rms_ratio);

@@ -168,6 +168,7 @@ struct SolveConfig {
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
+  double flat_noise_sigmas = 2.5;        // in a view, the plane a round solid is weighed against takes this many noise deviations along the rays
   double preferred_margin = 0.02;        // solids explaining within this share of the best are all in the running...
   double closer_fit_margin = 0.25;       // ... and one with an RMS this much lower than the key-point class's wins
   double ambiguity_rms_ratio = 1.0;      // ... another family's as close (this x its RMS): unknown

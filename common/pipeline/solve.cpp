@@ -12,6 +12,7 @@
 #include "pipeline/scan_fit.hpp"
 #include "pipeline/solid_checks.hpp"
 #include "pipeline/solids.hpp"
+#include "pipeline/view_noise.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -22,6 +23,9 @@ using detail::same_kind;
 using detail::sector_coverage;
 using detail::Verification;
 using detail::verify;
+
+// Rays whose points read the noise off a view's surface: a depth image's 4 x 4 pixels.
+constexpr std::size_t kViewNoiseNeighbours = 16;
 
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
                  const config::SolveConfig& cfg, parallel::ThreadPool* pool) {
@@ -255,10 +259,16 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // A round solid whose points a plane explains as well (within cfg.preferred_margin) shows no
   // curvature beyond the tolerance: which way its surface bends, and how much, is not measured
   // (one face of a tetrahedron under a depth camera's noise passed for a flat cone's hollow, and
-  // so for a container).
+  // so for a container). In a view the plane's band is at least cfg.flat_noise_sigmas of the
+  // noise along the rays: nearest points in space read a third of a far face's noise, the plane
+  // fits took a cone's base disc 1.8 m off apart in layers and a cylinder held them as its caps.
   if (chosen && is_round(chosen->first.shape) &&
       chosen->second.explained >= cfg.min_inlier_fraction) {
-    const double flat = plane_share(cloud, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+    double band = tolerance;
+    if (viewpoint && cfg.flat_noise_sigmas > 0.0)
+      band = std::max(
+          band, cfg.flat_noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseNeighbours));
+    const double flat = plane_share(cloud, band, static_cast<std::size_t>(cfg.verify_samples));
     if (flat >= chosen->second.explained - cfg.preferred_margin) {
       char buf[160];
       std::snprintf(
