@@ -92,6 +92,7 @@ template <class F>
 void visit_fields(PlanesConfig& c, F&& f) {
   f("coarse_threshold", c.coarse_threshold);
   f("fine_threshold", c.fine_threshold);
+  f("noise_sigmas", c.noise_sigmas);
   f("face_max_sagitta", c.face_max_sagitta);
   f("face_min_radius_ratio", c.face_min_radius_ratio);
   f("min_plane_fraction", c.min_plane_fraction);
@@ -183,6 +184,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("arc_min_sagitta_cells", c.arc_min_sagitta_cells);
   f("box_face_rect_fill", c.box_face_rect_fill);
   f("box_outline_min_share", c.box_outline_min_share);
+  f("box_depth_min_share", c.box_depth_min_share);
   f("stray_face_degrees", c.stray_face_degrees);
   f("stray_face_share", c.stray_face_share);
   f("box_slanted_width_ratio", c.box_slanted_width_ratio);

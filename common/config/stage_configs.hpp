@@ -47,6 +47,7 @@ struct PreprocessConfig {
 struct PlanesConfig {
   double coarse_threshold = 3.0;        // first RANSAC pass, in resolutions (thesis: two thresholds)
   double fine_threshold = 0.8;          // refit pass, in resolutions
+  double noise_sigmas = 2.5;            // ... in a depth camera's view at least this many times the noise along its rays (up to coarse)
   double face_max_sagitta = 0.6;        // a patch bending less than this (x fine threshold) is a face...
   double face_min_radius_ratio = 5.0;   // ... and so is one curving over a radius this many times its width (a bulging real face)
   double min_plane_fraction = 0.015;    // smallest plane, as a fraction of the cloud's points
@@ -168,7 +169,7 @@ struct SolveConfig {
   double max_size_ratio = 1.5;           // no dimension may exceed this times the cloud's enclosing diameter
   double sector_min_share = 0.02;        // a direction sector with fewer points than this share of an even split is unseen: partial
   std::int64_t verify_samples = 4000;    // points the verification of a candidate solid looks at
-  double flat_noise_sigmas = 2.5;        // in a view, the plane a round solid is weighed against takes this many noise deviations along the rays
+  double flat_noise_sigmas = 2.5;        // in a depth camera's view, the plane a round solid is weighed against takes this many noise deviations along the rays
   double preferred_margin = 0.02;        // solids explaining within this share of the best are all in the running...
   double closer_fit_margin = 0.25;       // ... and one with an RMS this much lower than the key-point class's wins
   double ambiguity_rms_ratio = 1.0;      // ... another family's as close (this x its RMS): unknown
@@ -193,6 +194,7 @@ struct SolveConfig {
   double side_face_min_share = 0.1;      // ... a cone's or frustum's faces counting only when each holds this share of the points (apex strips are small)
   double box_face_rect_fill = 0.6;       // a box's larger faces fill at least this share of their smallest enclosing rectangle (a triangle: half) ...
   double box_outline_min_share = 0.15;   // ... those holding at least this share of the flat faces' points
+  double box_depth_min_share = 0.05;    // a box seen on one face alone needs this share of the points off it
   double stray_face_degrees = 20.0;      // a face farther than this from every face direction of a box or tetrahedron is none of its faces ...
   double stray_face_share = 0.25;     // at most this share of the faces' points on faces along none of a box's or tetrahedron's face directions (an octahedron's: a quarter or more)
   double box_slanted_width_ratio = 0.5;  // a face along none of a box's axes sharing an edge with a face along one, the narrower of the two at least this share of the wider's width across it, rules the box out ...

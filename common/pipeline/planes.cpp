@@ -7,6 +7,7 @@
 
 #include "geometry/circle.hpp"
 #include "pipeline/plane_patch.hpp"
+#include "pipeline/view_noise.hpp"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -16,6 +17,8 @@ namespace cloudshape::pipeline {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+// Rays whose points read a view's noise: a depth image's 4 x 4 pixels.
+constexpr std::size_t kViewNoiseNeighbours = 16;
 
 std::vector<std::uint32_t> points_near(const PointList& cloud,
                                        const std::vector<std::uint32_t>& pool,
@@ -192,8 +195,9 @@ std::vector<PlaneLine> find_plane_lines(const PointList& cloud,
 }
 
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg, const geometry::KdTree* shared_tree,
-                                 parallel::ThreadPool* pool) {
+                                 const config::PlanesConfig& cfg,
+                                 const geometry::KdTree* shared_tree, parallel::ThreadPool* pool,
+                                 const std::optional<Point>& viewpoint) {
   PlaneSegmentation out;
   out.labels.assign(cloud.size(), -1);
   if (cloud.size() < 3 || !(resolution > 0.0)) return out;
@@ -204,7 +208,14 @@ PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
       static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.min_plane_points)),
       static_cast<std::size_t>(cfg.min_plane_fraction * static_cast<double>(cloud.size())));
   const double coarse = cfg.coarse_threshold * resolution;
-  const double fine = cfg.fine_threshold * resolution;
+  // Seen by a sensor whose noise exceeds the fine band, the band takes cfg.noise_sigmas of that
+  // noise (read along the rays: the nearest points in space read a third of it): a band narrower
+  // than the noise takes a face apart in parallel layers, which pass for a box's opposite faces or
+  // a cylinder's caps.
+  double fine = cfg.fine_threshold * resolution;
+  if (viewpoint && cfg.noise_sigmas > 0.0)
+    fine = std::clamp(cfg.noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseNeighbours),
+                      fine, std::max(fine, coarse));
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Point& p : cloud) centroid += p;
   centroid /= static_cast<double>(cloud.size());

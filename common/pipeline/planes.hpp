@@ -2,6 +2,8 @@
 // threshold; each plane's boundary points; the lines common to two planes.
 #pragma once
 
+#include <optional>
+
 #include <cstdint>
 #include <vector>
 
@@ -42,10 +44,14 @@ struct PlaneSegmentation {
 };
 
 // `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages). A `pool`
-// shares the boundary tests out: the same result.
+// shares the boundary tests out: the same result. `viewpoint`: a depth camera's, where known (the
+// fine band then follows the points' noise along its rays, cfg.noise_sigmas); not a lidar's, whose
+// nearest rays run along one ring, where no plane across them is determined.
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
-                                 const config::PlanesConfig& cfg, const geometry::KdTree* tree = nullptr,
-                                 parallel::ThreadPool* pool = nullptr);
+                                 const config::PlanesConfig& cfg,
+                                 const geometry::KdTree* tree = nullptr,
+                                 parallel::ThreadPool* pool = nullptr,
+                                 const std::optional<Point>& viewpoint = std::nullopt);
 
 // Lines where two planes meet, clipped to where both planes' boundary points lie near.
 std::vector<PlaneLine> find_plane_lines(const PointList& cloud,

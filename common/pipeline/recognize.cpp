@@ -62,7 +62,9 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     const geometry::KdTree& tree = o.tree ? *o.tree : own_tree.emplace(o.points);
     // The pool splits an object's own work only while it is not busy with the objects: one
     // object has both threads, several run side by side.
-    const PlaneSegmentation planes = segment_planes(o.points, o.resolution, cfg.planes, &tree, pool);
+    const PlaneSegmentation planes =
+        segment_planes(o.points, o.resolution, cfg.planes, &tree, pool,
+                       o.scan_lines == 0 ? clouds.viewpoint : std::nullopt);
     t.planes_ms = object_clock.lap_ms();
     const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints, &tree);
     t.keypoints_ms = object_clock.lap_ms();

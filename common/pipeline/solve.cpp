@@ -259,13 +259,14 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // A round solid whose points a plane explains as well (within cfg.preferred_margin) shows no
   // curvature beyond the tolerance: which way its surface bends, and how much, is not measured
   // (one face of a tetrahedron under a depth camera's noise passed for a flat cone's hollow, and
-  // so for a container). In a view the plane's band is at least cfg.flat_noise_sigmas of the
-  // noise along the rays: nearest points in space read a third of a far face's noise, the plane
-  // fits took a cone's base disc 1.8 m off apart in layers and a cylinder held them as its caps.
+  // so for a container). In a depth camera's view the plane's band is at least
+  // cfg.flat_noise_sigmas of the noise along the rays (nearest points in space read a third of a
+  // far face's noise: a cone's base disc 1.8 m off passed for a cylinder); not in a lidar's, whose
+  // nearest rays run along one ring.
   if (chosen && is_round(chosen->first.shape) &&
       chosen->second.explained >= cfg.min_inlier_fraction) {
     double band = tolerance;
-    if (viewpoint && cfg.flat_noise_sigmas > 0.0)
+    if (viewpoint && scan_lines == 0 && cfg.flat_noise_sigmas > 0.0)
       band = std::max(
           band, cfg.flat_noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseNeighbours));
     const double flat = plane_share(cloud, band, static_cast<std::size_t>(cfg.verify_samples));

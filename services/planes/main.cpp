@@ -18,8 +18,9 @@ int main(int argc, char** argv) {
         [&](cs::msg::FilteredCloud& in) {
           const cs::PointList points = cs::dds::from_xyz(in.cloud().xyz());
           const auto start = std::chrono::steady_clock::now();
-          const cs::pipeline::PlaneSegmentation seg =
-              cs::pipeline::segment_planes(points, in.cloud().resolution(), cfg.planes, nullptr, &pool);
+          const cs::pipeline::PlaneSegmentation seg = cs::pipeline::segment_planes(
+              points, in.cloud().resolution(), cfg.planes, nullptr, &pool,
+              in.cloud().scan_lines() == 0 ? cs::dds::viewpoint_of(in.cloud()) : std::nullopt);
           cs::msg::PlanesAndLines out;
           out.header(in.header());
           out.header().timings().planes_ms(cs::service::elapsed_ms(start));

@@ -237,7 +237,10 @@ Names names_of(const std::vector<NoisyFrame>& frames, const config::PipelineConf
 // four-object frames, a 3.6 cm ball 1.7 m off whose noisy rim gave a tetrahedron's four corners,
 // named a cylinder while a sphere explained its points alike, is the seventh; the right ones of
 // that frame stay. The eighth, row seed 2's cone lying with its tip lost, a cylinder and a frustum
-// alike (ConesATiltedCylinderFollowsAreNotNamedCylinders).
+// alike (ConesATiltedCylinderFollowsAreNotNamedCylinders). Since the planes' band follows the noise
+// read along the rays (planes.noise_sigmas) the faces of those frames no longer come apart in
+// layers and most of those eight are told apart: 55 objects named right with the rule or without
+// it, two alike (`unknown`), which without it are two of six wrong names.
 TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const synth::CaptureOptions twice = twice_the_noise();
@@ -251,9 +254,10 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
   cfg.solve.ambiguity_rms_ratio = 0.0;
   const Names without = names_of(frames, cfg);
   EXPECT_EQ(without.alike, 0);
-  EXPECT_EQ(with.alike, 8);
-  EXPECT_EQ(with.wrong, without.wrong - 8);
+  EXPECT_EQ(with.alike, 2);
+  EXPECT_EQ(with.wrong, without.wrong - 2);
   EXPECT_EQ(with.right, without.right);
+  EXPECT_GE(with.right, 55);
 }
 
 // Cones whose fits from their normals missed the apex, so that they explained 71-88% of the points
@@ -263,7 +267,9 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
 // where the cone explained under solve.side_fit_min_inlier_fraction, and all four were named
 // cylinders. It is now tried also where the cone explains solve.min_inlier_fraction but is out of
 // the running (more than solve.preferred_margin below the most explained), and explains 98-100%:
-// measured, every one a cone, radius within 10% and height within 7%; tolerance 15%.
+// measured, every one a cone, radius within 10% and height within 7%; tolerance 15%. Since the
+// planes' band follows the noise along the rays, row 8's (twice the noise) is `unknown`: a plane
+// within that noise explains 79% of its points, the cone 75%.
 TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const synth::CaptureOptions twice = twice_the_noise();
@@ -272,9 +278,12 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
       stored_frame(synth::SceneLayout::row, 8, twice, 3),
       stored_frame(synth::SceneLayout::wall, 12, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::wall, 14, kinect_faults(), 4)};
-  const std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  ASSERT_EQ(cones.size(), 4u);
+  ASSERT_TRUE(cones[1].report.has_value());
+  EXPECT_EQ(cones[1].report->shape, "unknown");
+  cones.erase(cones.begin() + 1);
   expect_cones(cones, 0.15);
-  EXPECT_EQ(cones.size(), 4u);
 }
 
 // The Kinect's faults, random layout seed 15 (four solids): a cone 1.84 m off seen base-on, its
@@ -307,8 +316,9 @@ TEST(NoisyDepthScene, ADiscSeenThroughItsNoiseIsNoCylinder) {
 // read as a circular face: a lid, for which only the cylinder, cone, frustum and other prisms were
 // tried, and three of the balls were named frusta (row 1's other, `unknown`). The sphere is now
 // tried beside such a face too in a view (a sensor's viewpoint known): measured, those three
-// spheres, radius within 9%, centre within 6 mm (tolerance 12%, 10 mm), the fourth still `unknown`;
-// none named another solid.
+// spheres, radius within 9%, centre within 6 mm (tolerance 12%, 10 mm); the fourth, `unknown`
+// while the planes' band was narrower than the noise, is a sphere too since it follows the noise
+// along the rays (planes.noise_sigmas). None named another solid.
 TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const synth::CaptureOptions twice = twice_the_noise();
@@ -327,7 +337,7 @@ TEST(NoisyDepthScene, BallsWhoseCapPassesForALidStaySpheres) {
     EXPECT_LT((h.report->center - h.object.solid.pose.center).norm(), 0.01);
   }
   EXPECT_EQ(balls.size(), 4u);
-  EXPECT_EQ(spheres, 3);
+  EXPECT_EQ(spheres, 4);
 }
 
 // A pentagonal prism's cap outline, its corners each placed within the verification's tolerance
@@ -405,7 +415,10 @@ TEST(NoisyDepthScene, PentagonalPrismsSeenOnTwoSidesAreNoBoxes) {
 // for a flat cone's hollow, so for a container: a cylinder 2.3 cm tall at 0.96) and row seed 12 (a
 // tetrahedron named a cylinder 11 cm wide). The curvature such a solid claims is within the
 // tolerance of a plane: the four are now unknown ("a plane explains the points as well"), and the
-// seven objects of those frames named right stay so.
+// seven objects of those frames named right stay so. Since the planes' band follows the noise along
+// the rays (planes.noise_sigmas), random seed 17's face, one plane now, fits no solid at all
+// (`unknown`, "no solid could be fitted"), and that frame's ball, a cylinder before, is a sphere:
+// eight right.
 TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const std::vector<NoisyFrame> frames = {
@@ -424,11 +437,12 @@ TEST(NoisyDepthScene, RoundSolidsAPlaneExplainsAsWellAreNotNamed) {
     if (std::find(flat.begin(), flat.end(), h.where) == flat.end()) continue;
     ++flats;
     EXPECT_EQ(h.report->shape, "unknown");
+    if (h.where == "frame 2, label 20") continue;
     EXPECT_NE(h.report->reason.find("a plane explains the points as well"), std::string::npos)
         << h.report->reason;
   }
   EXPECT_EQ(flats, 4);
-  EXPECT_EQ(right, 7);
+  EXPECT_EQ(right, 8);
 }
 
 // Cones lying on the table with their tip lost, seen from the side: random seed 15 of the
