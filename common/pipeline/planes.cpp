@@ -17,8 +17,6 @@ namespace cloudshape::pipeline {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Rays whose points read a view's noise: a depth image's 4 x 4 pixels.
-constexpr std::size_t kViewNoiseNeighbours = 16;
 
 std::vector<std::uint32_t> points_near(const PointList& cloud,
                                        const std::vector<std::uint32_t>& pool,
@@ -214,8 +212,8 @@ PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
   // a cylinder's caps.
   double fine = cfg.fine_threshold * resolution;
   if (viewpoint && cfg.noise_sigmas > 0.0)
-    fine = std::clamp(cfg.noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseNeighbours),
-                      fine, std::max(fine, coarse));
+    fine = std::clamp(cfg.noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseRays), fine,
+                      std::max(fine, coarse));
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Point& p : cloud) centroid += p;
   centroid /= static_cast<double>(cloud.size());

@@ -24,9 +24,6 @@ using detail::sector_coverage;
 using detail::Verification;
 using detail::verify;
 
-// Rays whose points read the noise off a view's surface: a depth image's 4 x 4 pixels.
-constexpr std::size_t kViewNoiseNeighbours = 16;
-
 Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hints,
                  const config::SolveConfig& cfg, parallel::ThreadPool* pool) {
   const geometry::OrientedBox box = geometry::oriented_bounding_box(
@@ -267,8 +264,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       chosen->second.explained >= cfg.min_inlier_fraction) {
     double band = tolerance;
     if (viewpoint && scan_lines == 0 && cfg.flat_noise_sigmas > 0.0)
-      band = std::max(
-          band, cfg.flat_noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseNeighbours));
+      band = std::max(band,
+                      cfg.flat_noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseRays));
     const double flat = plane_share(cloud, band, static_cast<std::size_t>(cfg.verify_samples));
     if (flat >= chosen->second.explained - cfg.preferred_margin) {
       char buf[160];

@@ -17,4 +17,8 @@ namespace cloudshape::pipeline {
 // agrees, and read a third to a half of it. 0 for fewer points than `neighbours`.
 double noise_along_view(const PointList& points, const Point& viewpoint, std::size_t neighbours);
 
+// The rays whose points read a depth image's noise about one of them: its 4 x 4 pixels, as many
+// as surface_noise's neighbourhoods.
+constexpr std::size_t kViewNoiseRays = 16;
+
 }  // namespace cloudshape::pipeline
