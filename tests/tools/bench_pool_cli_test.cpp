@@ -2,6 +2,7 @@
 // runs alone (not with --scenes or --accuracy).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -20,13 +21,18 @@ TEST(BenchPool, RowsGrowWithTheBlocksWorkAndRunOneBlockAThread) {
   EXPECT_EQ(out.at("blocks"), 2);
   const nlohmann::json& rows = out.at("rows");
   ASSERT_EQ(rows.size(), 5u) << out.dump();
-  // Each row has ten times the steps of the one before (four times for the last): its block
-  // takes longer by far more than any timing noise.
+  // The work a row gives each block is fixed and grows from row to row; its times are whatever
+  // the machine's load makes them (a benchmark's figures, not asserted against each other), but
+  // every row measured something.
+  EXPECT_EQ(rows[0].at("block_steps").get<std::size_t>(), 0u) << out.dump();
   for (std::size_t r = 1; r < rows.size(); ++r) {
-    EXPECT_GT(rows[r].at("block_us").get<double>(), 2.0 * rows[r - 1].at("block_us").get<double>())
+    EXPECT_GT(rows[r].at("block_steps").get<std::size_t>(),
+              rows[r - 1].at("block_steps").get<std::size_t>())
         << out.dump();
-    EXPECT_GT(rows[r].at("in_order_us").get<double>(), 0.0) << out.dump();
-    EXPECT_GT(rows[r].at("pool_us").get<double>(), 0.0) << out.dump();
+    for (const char* field : {"block_us", "in_order_us", "pool_us", "speedup"}) {
+      const double value = rows[r].at(field).get<double>();
+      EXPECT_TRUE(std::isfinite(value) && value > 0.0) << field << " " << out.dump();
+    }
   }
 }
 

@@ -61,7 +61,8 @@ int run_pool_bench(const PoolBenchOptions& options) {
     const double pooled = per_call_us(options.pool, blocks, steps, calls, options.batches);
     const double speedup = pooled > 0.0 ? serial / pooled : 0.0;
     if (options.json) {
-      rows.push_back({{"block_us", block_us},
+      rows.push_back({{"block_steps", steps},
+                      {"block_us", block_us},
                       {"in_order_us", serial},
                       {"pool_us", pooled},
                       {"speedup", speedup}});
