@@ -57,6 +57,7 @@ msg::PlaneSegmentation to_msg(const pipeline::PlaneSegmentation& s) {
     m.lines().push_back(ml);
   }
   m.labels(s.labels);
+  m.view_noise(s.view_noise);
   return m;
 }
 
@@ -84,6 +85,7 @@ pipeline::PlaneSegmentation from_msg(const msg::PlaneSegmentation& m) {
     s.lines.push_back(l);
   }
   s.labels = m.labels();
+  s.view_noise = m.view_noise();
   return s;
 }
 

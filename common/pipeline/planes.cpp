@@ -211,9 +211,10 @@ PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
   // than the noise takes a face apart in parallel layers, which pass for a box's opposite faces or
   // a cylinder's caps.
   double fine = cfg.fine_threshold * resolution;
-  if (viewpoint && cfg.noise_sigmas > 0.0)
-    fine = std::clamp(cfg.noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseRays), fine,
-                      std::max(fine, coarse));
+  if (viewpoint && cfg.noise_sigmas > 0.0) {
+    out.view_noise = noise_along_view(cloud, *viewpoint, kViewNoiseRays);
+    fine = std::clamp(cfg.noise_sigmas * out.view_noise, fine, std::max(fine, coarse));
+  }
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Point& p : cloud) centroid += p;
   centroid /= static_cast<double>(cloud.size());

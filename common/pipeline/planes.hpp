@@ -41,12 +41,15 @@ struct PlaneSegmentation {
   std::vector<DetectedPlane> planes;
   std::vector<PlaneLine> lines;
   std::vector<std::int32_t> labels;  // per point: index of its plane, or -1
+  // The points' noise along a depth camera's rays (noise_along_view), as read for the fine band;
+  // 0 where it was not read (no viewpoint, or cfg.noise_sigmas 0). The solver reuses it.
+  double view_noise = 0.0;
 };
 
 // `tree`, if given, is a search tree over `cloud` (the object's, shared by the stages). A `pool`
 // shares the boundary tests out: the same result. `viewpoint`: a depth camera's, where known (the
-// fine band then follows the points' noise along its rays, cfg.noise_sigmas); not a lidar's, whose
-// nearest rays run along one ring, where no plane across them is determined.
+// fine band then follows the points' noise along its rays, cfg.noise_sigmas); not a lidar's
+// (noise_viewpoint).
 PlaneSegmentation segment_planes(const PointList& cloud, double resolution,
                                  const config::PlanesConfig& cfg,
                                  const geometry::KdTree* tree = nullptr,

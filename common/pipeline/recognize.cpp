@@ -6,9 +6,10 @@
 #include "geometry/kdtree.hpp"
 #include "pipeline/classify.hpp"
 #include "pipeline/keypoints.hpp"
-#include "pipeline/planes.hpp"
 #include "pipeline/object_clouds.hpp"
+#include "pipeline/planes.hpp"
 #include "pipeline/solve.hpp"
+#include "pipeline/view_noise.hpp"
 
 namespace cloudshape::pipeline {
 namespace {
@@ -64,7 +65,7 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     // object has both threads, several run side by side.
     const PlaneSegmentation planes =
         segment_planes(o.points, o.resolution, cfg.planes, &tree, pool,
-                       o.scan_lines == 0 ? clouds.viewpoint : std::nullopt);
+                       noise_viewpoint(clouds.viewpoint, o.scan_lines));
     t.planes_ms = object_clock.lap_ms();
     const KeypointSet keypoints = find_keypoints(o.points, planes, o.resolution, cfg.keypoints, &tree);
     t.keypoints_ms = object_clock.lap_ms();

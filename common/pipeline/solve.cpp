@@ -263,9 +263,13 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   if (chosen && is_round(chosen->first.shape) &&
       chosen->second.explained >= cfg.min_inlier_fraction) {
     double band = tolerance;
-    if (viewpoint && scan_lines == 0 && cfg.flat_noise_sigmas > 0.0)
-      band = std::max(band,
-                      cfg.flat_noise_sigmas * noise_along_view(cloud, *viewpoint, kViewNoiseRays));
+    const std::optional<Point> camera = noise_viewpoint(viewpoint, scan_lines);
+    if (camera && cfg.flat_noise_sigmas > 0.0) {
+      const double noise = planes.view_noise > 0.0
+                               ? planes.view_noise
+                               : noise_along_view(cloud, *camera, kViewNoiseRays);
+      band = std::max(band, cfg.flat_noise_sigmas * noise);
+    }
     const double flat = plane_share(cloud, band, static_cast<std::size_t>(cfg.verify_samples));
     if (flat >= chosen->second.explained - cfg.preferred_margin) {
       char buf[160];

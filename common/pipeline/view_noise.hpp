@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 
 #include "geometry/point_cloud.hpp"
 
@@ -20,5 +22,12 @@ double noise_along_view(const PointList& points, const Point& viewpoint, std::si
 // The rays whose points read a depth image's noise about one of them: its 4 x 4 pixels, as many
 // as surface_noise's neighbourhoods.
 constexpr std::size_t kViewNoiseRays = 16;
+
+// The viewpoint whose rays read the noise: a depth camera's, not a lidar's (`scan_lines` > 0),
+// whose nearest rays run along one ring, where no plane across them is determined.
+inline std::optional<Point> noise_viewpoint(const std::optional<Point>& viewpoint,
+                                            std::uint32_t scan_lines) {
+  return scan_lines == 0 ? viewpoint : std::nullopt;
+}
 
 }  // namespace cloudshape::pipeline

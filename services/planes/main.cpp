@@ -4,6 +4,7 @@
 #include "dds/convert.hpp"
 #include "parallel/thread_pool.hpp"
 #include "pipeline/planes.hpp"
+#include "pipeline/view_noise.hpp"
 
 int main(int argc, char** argv) {
   namespace cs = cloudshape;
@@ -20,7 +21,8 @@ int main(int argc, char** argv) {
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::PlaneSegmentation seg = cs::pipeline::segment_planes(
               points, in.cloud().resolution(), cfg.planes, nullptr, &pool,
-              in.cloud().scan_lines() == 0 ? cs::dds::viewpoint_of(in.cloud()) : std::nullopt);
+              cs::pipeline::noise_viewpoint(cs::dds::viewpoint_of(in.cloud()),
+                                            in.cloud().scan_lines()));
           cs::msg::PlanesAndLines out;
           out.header(in.header());
           out.header().timings().planes_ms(cs::service::elapsed_ms(start));

@@ -133,6 +133,9 @@ TEST(DdsConvert, PlanesRoundTripIsExact) {
     EXPECT_EQ(back.lines[i].plane_b, s.lines[i].plane_b);
   }
   EXPECT_EQ(back.labels, s.labels);
+  pipeline::PlaneSegmentation seen = s;
+  seen.view_noise = 0.0031;  // read in a depth camera's view: the solver reuses it
+  EXPECT_EQ(from_msg(to_msg(seen)).view_noise, seen.view_noise);
 }
 
 TEST(DdsConvert, KeypointsRoundTripIsExact) {
