@@ -60,6 +60,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("flat_junction_length", c.flat_junction_length);
   f("concave_cut_band", c.concave_cut_band);
   f("concave_cut_cross_share", c.concave_cut_cross_share);
+  f("concave_cut_kink_ratio", c.concave_cut_kink_ratio);
   f("cavity_concavity", c.cavity_concavity);
   f("cavity_gap", c.cavity_gap);
   f("structure_max_planes", c.structure_max_planes);

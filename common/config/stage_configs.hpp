@@ -115,7 +115,12 @@ struct SegmentConfig {
   double piece_cover = 0.9;                // ... holding this share of it is split into them
   double flat_junction_length = 0.5;       // organized: two parallel patches side by side join only along at least this many times the square root of the smaller one's nodes
   double concave_cut_band = 3.0;           // organized: a segment whose flat patch meets another of its patches concavely is cut along its plane: within this many node spacings of it is on it ...
-  double concave_cut_cross_share = 0.05;   // ... a patch with more than this share of its surface nodes beyond the band on one side goes there; on both, a flat one (a face through the cut) or one not two flat pieces stops the cut
+  // ... a patch with more than this share of its surface nodes beyond the band on one side goes
+  // there; on both, a flat one (a face through the cut) or one not two flat pieces stops the cut ...
+  double concave_cut_cross_share = 0.05;
+  // ... unless it spreads off its plane this many times as far as its two pieces off theirs (two
+  // solids' faces meeting at a kink; 0: a flat one always stops it)
+  double concave_cut_kink_ratio = 2.0;
   double cavity_concavity = 0.3;           // a segment this concave towards the sensor (mean n . (x - c) over its RMS spread) is a container's inside: it joins the container ...
   double cavity_gap = 10.0;                 // ... the segment with the most nodes within this many node spacings of it
   std::int64_t structure_max_planes = 8;   // structure planes (table, floor, walls) removed at most

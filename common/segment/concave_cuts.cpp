@@ -12,7 +12,8 @@ namespace {
 struct Plane {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-  double band = 0.0;  // cfg.concave_cut_band of the nodes' spacings
+  double band = 0.0;    // cfg.concave_cut_band of the nodes' spacings
+  double spread = 0.0;  // the nodes' RMS distance from it
 };
 
 // The plane of `nodes`, when they lie flat within the band (three standard deviations).
@@ -23,9 +24,23 @@ std::optional<Plane> flat_plane(const NeighbourGraph& g, const std::vector<std::
   for (std::uint32_t n : nodes) spacing += g.spacing[n];
   spacing /= static_cast<double>(nodes.size());
   const geometry::Pca pca = geometry::compute_pca(g.nodes, nodes);
-  Plane plane{pca.centroid, pca.eigenvectors.col(0).normalized(), cfg.concave_cut_band * spacing};
-  if (!(plane.band > 0.0) || 3.0 * std::sqrt(std::max(0.0, pca.eigenvalues(0))) > plane.band) return std::nullopt;
+  Plane plane{pca.centroid, pca.eigenvectors.col(0).normalized(), cfg.concave_cut_band * spacing,
+              std::sqrt(std::max(0.0, pca.eigenvalues(0)))};
+  if (!(plane.band > 0.0) || 3.0 * plane.spread > plane.band) return std::nullopt;
   return plane;
+}
+
+// Whether a flat patch lying across a cut is two faces meeting at a kink there, not one face: it
+// spreads off its plane cfg.concave_cut_kink_ratio times as far as its pieces either side of the
+// cut spread off theirs (one face's pieces spread as far as it does: its noise). The floor, a
+// thousandth of the band, keeps noise-free pieces from dividing by their rounding.
+bool kinked(const Plane& whole, const Plane& up, std::size_t up_nodes, const Plane& down,
+            std::size_t down_nodes, const config::SegmentConfig& cfg) {
+  if (!(cfg.concave_cut_kink_ratio > 0.0)) return false;
+  const double u = static_cast<double>(up_nodes), d = static_cast<double>(down_nodes);
+  const double pieces =
+      std::sqrt((u * up.spread * up.spread + d * down.spread * down.spread) / (u + d));
+  return whole.spread > cfg.concave_cut_kink_ratio * std::max(pieces, 1e-3 * whole.band);
 }
 
 // A cut: the patches going to the positive side whole, and those split by it.
@@ -81,11 +96,18 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
       const double cross = std::max(2.0, cfg.concave_cut_cross_share * static_cast<double>(members[q].size()));
       if (static_cast<double>(above) > cross && static_cast<double>(below) > cross) {
         // A face of one solid runs through the plane; a patch grown over two solids' parallel
-        // faces (round a step finer than its smoothness) is two flat pieces, one either side.
-        if (flat_plane(g, members[q], 0, cfg)) return std::nullopt;
+        // faces (round a step finer than its smoothness), or over two faces meeting at a kink
+        // (a box turned on a larger one: the fronts, where the lower top's strip runs out), is two
+        // flat pieces, one either side.
         std::vector<std::uint32_t> up, down;
         for (std::uint32_t n : members[q]) (signed_distance(face, normal, n) > face.band ? up : down).push_back(n);
-        if (!flat_plane(g, up, 0, cfg) || !flat_plane(g, down, 0, cfg)) return std::nullopt;
+        const std::optional<Plane> up_plane = flat_plane(g, up, 0, cfg),
+                                   down_plane = flat_plane(g, down, 0, cfg);
+        if (!up_plane || !down_plane) return std::nullopt;
+        const std::optional<Plane> whole_plane = flat_plane(g, members[q], 0, cfg);
+        if (whole_plane &&
+            !kinked(*whole_plane, *up_plane, up.size(), *down_plane, down.size(), cfg))
+          return std::nullopt;
         cut.split.push_back(q);
         for (std::uint32_t n : all[q]) (signed_distance(face, normal, n) > face.band ? nodes_positive : nodes_negative) += 1;
       } else if (static_cast<double>(above) > cross) {

@@ -35,7 +35,10 @@ struct JunctionPairs {
 // it is flat (a face of one solid runs through any plane inside it, so an L-shaped solid seen
 // with its cap is never cut) or when either side's piece of it is not flat; otherwise it grew
 // over two solids' parallel faces and is split: its nodes beyond the band become a patch of their
-// own (`patch` and `patches` grow). No convex edge may run along the cut (two patches of
+// own (`patch` and `patches` grow). A flat patch is split too when it spreads off its plane
+// cfg.concave_cut_kink_ratio times as far as its two pieces off theirs: two solids' faces meeting
+// at a kink (a box turned on a slightly larger one, the fronts grown into one patch where the
+// lower top's strip runs out). No convex edge may run along the cut (two patches of
 // cfg.min_object_nodes surface nodes or more, one either side, meeting at one: a solid's own
 // faces, a can's lid and side cut apart where a taller can beside it rises above the lid), and
 // each side must hold at least cfg.min_object_nodes nodes. Cuts

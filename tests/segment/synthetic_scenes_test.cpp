@@ -162,6 +162,38 @@ TEST(SegmentSyntheticScenes, ConcaveCutsSeparateStackedBoxes) {
   EXPECT_EQ(s.false_objects, 0u);
 }
 
+// Stacks of three turned boxes at 640 x 480 (stacked seeds 1, 16 and 40): a box turned on a
+// slightly larger one shows a strip of the lower top in front of it, which meets its front
+// concavely, but where the strip runs out the two fronts, about 10 degrees apart, grow one flat
+// patch within the cut's band, and a flat patch through the cut stopped it: the two boxes were one
+// segment. Spread off its plane twice as far as its two pieces off theirs
+// (segment.concave_cut_kink_ratio) it is two faces at a kink and is split. Measured: 9 of 9 boxes
+// (IoU >= 0.8), 3 without the rule.
+TEST(SegmentSyntheticScenes, FrontsJoinedAtAKinkAreCutAlongTheLowerTop) {
+  config::SegmentConfig without_kinks = config::PipelineConfig{}.segment;
+  without_kinks.concave_cut_kink_ratio = 0.0;
+  std::size_t objects = 0, found = 0, found_without = 0, false_objects = 0;
+  std::string detail;
+  for (std::uint64_t seed : {1, 16, 40}) {
+    synth::SceneRecipe recipe;
+    recipe.layout = synth::SceneLayout::stacked;
+    recipe.count = 3;
+    recipe.seed = seed;
+    const CapturedScene scene = capture_points(recipe, synth::CaptureOptions{});
+    const Scored s = score(scene, config::PipelineConfig{}.segment);
+    objects += s.objects;
+    found += s.found;
+    false_objects += s.false_objects;
+    found_without += score(scene, without_kinks).found;
+    detail += " seed " + std::to_string(seed) + ":" + s.detail;
+  }
+  SCOPED_TRACE(detail + " (found " + std::to_string(found) + ", without the rule " +
+               std::to_string(found_without) + ")");
+  EXPECT_EQ(found, objects);
+  EXPECT_LT(found_without, found);
+  EXPECT_EQ(false_objects, 0u);
+}
+
 // Objects touching in a row (touching seeds 14 and 25): where two solids' tops are level (two
 // cans' lids, side by side) the two flat patches touch along a few edges, and joined there
 // they made one segment of two or three objects; one face parted by a seam meets itself along
