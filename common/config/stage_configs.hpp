@@ -116,7 +116,7 @@ struct SegmentConfig {
   double flat_junction_length = 0.5;       // organized: two parallel patches side by side join only along at least this many times the square root of the smaller one's nodes
   double concave_cut_band = 3.0;           // organized: a segment whose flat patch meets another of its patches concavely is cut along its plane: within this many node spacings of it is on it ...
   // ... a patch with more than this share of its surface nodes beyond the band on one side goes
-  // there; on both, a flat one (a face through the cut) or one not two flat pieces stops the cut ...
+  // there; on both, a flat one (a face through the cut) or one not two flat pieces stops it ...
   double concave_cut_cross_share = 0.05;
   // ... unless it spreads off its plane this many times as far as its two pieces off theirs (two
   // solids' faces meeting at a kink; 0: a flat one always stops it)
@@ -197,6 +197,9 @@ struct SolveConfig {
   double arc_min_sagitta_cells = 2.0;    // ... bowing at least this many fill cells off its chord: a scan ring on a round surface
   double curved_side_flat_share = 0.6;   // at most this share of a cylinder's, sphere's, cone's or frustum's points off its caps on true flat faces (an octahedron: nearly all) ...
   double side_face_min_share = 0.1;      // ... a cone's or frustum's faces counting only when each holds this share of the points (apex strips are small)
+  // a cylinder is claimed only when at least this share of its points lie on its side: a flat
+  // face within a cap's circle (a tetrahedron's, two boxes' tops) has almost none
+  double cylinder_min_side_share = 0.05;
   double box_face_rect_fill = 0.6;       // a box's larger faces fill at least this share of their smallest enclosing rectangle (a triangle: half) ...
   double box_outline_min_share = 0.15;   // ... those holding at least this share of the flat faces' points
   double box_depth_min_share = 0.05;    // a box seen on one face alone needs this share of the points off it

@@ -120,6 +120,27 @@ double plane_share(const PointList& cloud, double tolerance, std::size_t max_sam
   return static_cast<double>(inliers.size()) / static_cast<double>(sample.size());
 }
 
+double cylinder_side_share(const PointList& cloud, const FittedSolid& solid, double tolerance,
+                           std::size_t max_samples) {
+  if (solid.shape != Shape::cylinder || cloud.empty()) return 0.0;
+  double radius = 0.0, height = 0.0;
+  for (const auto& [name, value] : solid.dimensions) {
+    if (name == "radius") radius = value;
+    if (name == "height") height = value;
+  }
+  const Eigen::Vector3d axis = solid.axes.row(0).transpose();
+  const std::size_t step = sample_step(cloud.size(), max_samples);
+  std::size_t on_side = 0, seen = 0;
+  for (std::size_t i = 0; i < cloud.size(); i += step, ++seen) {
+    const Eigen::Vector3d d = cloud[i] - solid.center;
+    const double along = d.dot(axis);
+    if (std::abs(along) < 0.5 * height - tolerance &&
+        std::abs((d - along * axis).norm() - radius) <= tolerance)
+      ++on_side;
+  }
+  return static_cast<double>(on_side) / static_cast<double>(seen);
+}
+
 double sector_coverage(const PointList& cloud, const Point& center, const Eigen::Matrix3d& axes,
                        double min_share) {
   std::array<std::size_t, 27> count{};

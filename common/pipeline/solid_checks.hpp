@@ -25,6 +25,14 @@ Verification verify(const PointList& cloud, const FittedSolid& solid, double tol
 // fits those within it: the points' plane, refitted twice to its inliers.
 double plane_share(const PointList& cloud, double tolerance, std::size_t max_samples);
 
+// Share of the points (the same sample as verify's) within `tolerance` of a cylinder's side (its
+// radius off the axis, between its caps and beyond `tolerance` of their planes: a cap's rim is
+// the cap's), 0 for any other solid: a cylinder's radius and axis are the side's; a flat face
+// whose outline a cap's circle holds (a tetrahedron's triangle, two boxes' tops) passes for its
+// caps with almost no side.
+double cylinder_side_share(const PointList& cloud, const FittedSolid& solid, double tolerance,
+                           std::size_t max_samples);
+
 // Share of the 26 direction sectors around the solid's centre (in its own frame: faces,
 // edges and corners of a cube) that hold points. A convex solid seen whole is hit by rays
 // from its centre in every direction, so every sector holds some of its surface; a single

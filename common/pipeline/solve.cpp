@@ -111,8 +111,13 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   std::vector<double> fills(planes.planes.size(), std::numeric_limits<double>::quiet_NaN());
   const auto admissible = [&](const std::optional<FittedSolid>& solid) {
     return solid && detail::plausible(*solid, diameter, cfg.max_size_ratio) &&
-           flat_side_share(*solid, planes, cloud, cos_parallel, cfg.flat_face_fill_cells * resolution,
-                           cfg.flat_face_min_fill, cfg.side_face_min_share, cfg.arc_max_scatter_cells,
+           (solid->shape != Shape::cylinder ||
+            detail::cylinder_side_share(cloud, *solid, tolerance,
+                                        static_cast<std::size_t>(cfg.verify_samples)) >=
+                cfg.cylinder_min_side_share) &&
+           flat_side_share(*solid, planes, cloud, cos_parallel,
+                           cfg.flat_face_fill_cells * resolution, cfg.flat_face_min_fill,
+                           cfg.side_face_min_share, cfg.arc_max_scatter_cells,
                            cfg.arc_min_sagitta_cells, fills) <= cfg.curved_side_flat_share;
   };
   // Each candidate's fit in its own slot, on the pool (the fits share only SolveInput's
