@@ -123,11 +123,7 @@ double plane_share(const PointList& cloud, double tolerance, std::size_t max_sam
 double cylinder_side_share(const PointList& cloud, const FittedSolid& solid, double tolerance,
                            std::size_t max_samples) {
   if (solid.shape != Shape::cylinder || cloud.empty()) return 0.0;
-  double radius = 0.0, height = 0.0;
-  for (const auto& [name, value] : solid.dimensions) {
-    if (name == "radius") radius = value;
-    if (name == "height") height = value;
-  }
+  const double radius = dimension(solid, "radius"), height = dimension(solid, "height");
   const Eigen::Vector3d axis = solid.axes.row(0).transpose();
   const std::size_t step = sample_step(cloud.size(), max_samples);
   std::size_t on_side = 0, seen = 0;
