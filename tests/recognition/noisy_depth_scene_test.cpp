@@ -92,6 +92,14 @@ std::vector<Holding> holdings(const std::vector<NoisyFrame>& frames,
   return out;
 }
 
+// The shape named for the solid of `label` in the frames ("missed" where no report holds it).
+std::string name_of(const std::vector<NoisyFrame>& frames, const config::PipelineConfig& cfg,
+                    std::uint32_t label) {
+  for (const Holding& h : holdings(frames, cfg))
+    if (h.object.label == label) return h.report ? h.report->shape : std::string("missed");
+  return "no such label";
+}
+
 // Each cone of the frames named a cone, its radius within `radius_share` of the truth and its
 // height from `short_share` under to `long_share` over it.
 void expect_cones(const std::vector<Holding>& cones, double radius_share, double short_share,
@@ -298,17 +306,12 @@ TEST(NoisyDepthScene, ADiscSeenThroughItsNoiseIsNoCylinder) {
   auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const std::vector<NoisyFrame> frames = {
       stored_frame(synth::SceneLayout::random, 15, kinect_faults(), 4)};
-  const auto name_of = [&](std::uint32_t label) {
-    for (const Holding& h : holdings(frames, cfg))
-      if (h.object.label == label) return h.report ? h.report->shape : std::string("missed");
-    return std::string("no such label");
-  };
   ASSERT_EQ(frames.front().capture.scene.objects.front().solid.kind, synth::ShapeKind::cone);
   const std::uint32_t disc = frames.front().capture.scene.objects.front().label;
-  EXPECT_EQ(name_of(disc), "unknown");
-  EXPECT_EQ(name_of(frames.front().capture.scene.objects.back().label), "tetrahedron");
+  EXPECT_EQ(name_of(frames, cfg, disc), "unknown");
+  EXPECT_EQ(name_of(frames, cfg, frames.front().capture.scene.objects.back().label), "tetrahedron");
   cfg.solve.flat_noise_sigmas = 0.0;
-  EXPECT_EQ(name_of(disc), "cylinder");
+  EXPECT_EQ(name_of(frames, cfg, disc), "cylinder");
 }
 
 // Twice the Kinect's noise (0.0038, its other faults too), row 5: the tetrahedron 1.4 m off shows
@@ -325,15 +328,10 @@ TEST(NoisyDepthScene, AFaceACapsCircleHoldsIsNoCylinder) {
   for (const synth::SceneObject& object : frames.front().capture.scene.objects)
     if (object.solid.kind == synth::ShapeKind::tetrahedron) tetrahedron = object.label;
   ASSERT_TRUE(tetrahedron.has_value());
-  const auto name_of = [&](std::uint32_t label) {
-    for (const Holding& h : holdings(frames, cfg))
-      if (h.object.label == label) return h.report ? h.report->shape : std::string("missed");
-    return std::string("no such label");
-  };
-  const std::string named = name_of(*tetrahedron);
+  const std::string named = name_of(frames, cfg, *tetrahedron);
   EXPECT_TRUE(named == "unknown" || named == "tetrahedron") << named;
   cfg.solve.cylinder_min_side_share = 0.0;
-  EXPECT_EQ(name_of(*tetrahedron), "cylinder");
+  EXPECT_EQ(name_of(frames, cfg, *tetrahedron), "cylinder");
 }
 
 // Twice the Kinect's noise (its other faults too), random 6 and row 1: four balls of radius 35-77
