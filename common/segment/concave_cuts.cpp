@@ -71,9 +71,11 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
   };
 
   // The cut along `face` (the plane of patch `at`) with `other` on its positive side, or nothing
-  // when a flat patch runs through it, a patch through it is not two flat pieces, a convex edge
-  // runs along it, or a side is too small to be an object.
-  const auto cut_along = [&](std::uint32_t at, std::uint32_t other, const Plane& face, Eigen::Vector3d& normal,
+  // when a flat patch runs through it, a patch through it is not two flat pieces, a convex edge at
+  // least as long as the concave junction (`concave_length`) runs along it, or a side is too small
+  // to be an object.
+  const auto cut_along = [&](std::uint32_t at, std::uint32_t other, std::uint32_t concave_length,
+                             const Plane& face, Eigen::Vector3d& normal,
                              const std::vector<std::uint32_t>& in_segment) -> std::optional<Cut> {
     normal = face.normal;
     if (members[other].empty()) return std::nullopt;
@@ -100,7 +102,8 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
         // (a box turned on a larger one: the fronts, where the lower top's strip runs out), is two
         // flat pieces, one either side.
         std::vector<std::uint32_t> up, down;
-        for (std::uint32_t n : members[q]) (signed_distance(face, normal, n) > face.band ? up : down).push_back(n);
+        for (std::uint32_t n : members[q])
+          (signed_distance(face, normal, n) > face.band ? up : down).push_back(n);
         const std::optional<Plane> up_plane = flat_plane(g, up, 0, cfg),
                                    down_plane = flat_plane(g, down, 0, cfg);
         if (!up_plane || !down_plane) return std::nullopt;
@@ -109,7 +112,8 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
             !kinked(*whole_plane, *up_plane, up.size(), *down_plane, down.size(), cfg))
           return std::nullopt;
         cut.split.push_back(q);
-        for (std::uint32_t n : all[q]) (signed_distance(face, normal, n) > face.band ? nodes_positive : nodes_negative) += 1;
+        for (std::uint32_t n : all[q])
+          (signed_distance(face, normal, n) > face.band ? nodes_positive : nodes_negative) += 1;
       } else if (static_cast<double>(above) > cross) {
         cut.positive.push_back(q);
         nodes_positive += all[q].size();
@@ -128,8 +132,9 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
       return group[q] == group[at] && members[q].size() >= min_nodes &&
              std::find(cut.split.begin(), cut.split.end(), q) == cut.split.end();
     };
-    for (const auto& [p, q] : pairs.edges)
-      if (whole(p) && whole(q) && positive(p) != positive(q)) return std::nullopt;
+    for (const PatchJunction& e : pairs.edges)
+      if (e.length >= concave_length && whole(e.a) && whole(e.b) && positive(e.a) != positive(e.b))
+        return std::nullopt;
     return cut;
   };
 
@@ -142,7 +147,7 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
   for (std::size_t round = 0; round < g.size(); ++round) {
     bool made = false, split_any = false;
     for (std::size_t k = 0; k < pairs.concave.size(); ++k) {
-      const auto [a, b] = pairs.concave[k];
+      const auto [a, b, length] = pairs.concave[k];
       if (group[a] != group[b]) continue;
       if (tried[k].first == group[a] && tried[k].second == version[group[a]]) continue;
       const std::uint32_t segment = group[a];
@@ -153,7 +158,7 @@ std::vector<std::uint32_t> cut_at_concave_faces(const NeighbourGraph& g, std::ve
         const std::optional<Plane> face = flat_plane(g, members[at], min_nodes, cfg);
         if (!face) continue;
         Eigen::Vector3d normal;
-        const std::optional<Cut> cut = cut_along(at, other, *face, normal, in_segment);
+        const std::optional<Cut> cut = cut_along(at, other, length, *face, normal, in_segment);
         if (!cut) continue;
         for (std::uint32_t q : cut->positive) group[q] = next_group;
         // A split patch's nodes beyond the band become a patch of their own on the positive side.

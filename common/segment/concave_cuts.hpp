@@ -12,11 +12,15 @@
 
 namespace cloudshape::segment {
 
-// Pairs of adjacent patches (lower id first, in the order of their ids): `concave`, whose
-// junction is mostly concave; `edges`, whose junction is mostly a convex edge (normals turned
-// apart beyond the convex tolerance).
+// Two adjacent patches (a < b) and the length of their junction: the graph edges between them.
+struct PatchJunction {
+  std::uint32_t a, b, length;
+};
+
+// Junctions of adjacent patches, in the order of their ids: `concave`, mostly concave; `edges`,
+// mostly a convex edge (normals turned apart beyond the convex tolerance).
 struct JunctionPairs {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> concave, edges;
+  std::vector<PatchJunction> concave, edges;
 };
 
 // `patch`: per node its smooth patch (0..patches-1) or -1; `surface`: per node whether it is a
@@ -38,10 +42,12 @@ struct JunctionPairs {
 // own (`patch` and `patches` grow). A flat patch is split too when it spreads off its plane
 // cfg.concave_cut_kink_ratio times as far as its two pieces off theirs: two solids' faces meeting
 // at a kink (a box turned on a slightly larger one, the fronts grown into one patch where the
-// lower top's strip runs out). No convex edge may run along the cut (two patches of
-// cfg.min_object_nodes surface nodes or more, one either side, meeting at one: a solid's own
-// faces, a can's lid and side cut apart where a taller can beside it rises above the lid), and
-// each side must hold at least cfg.min_object_nodes nodes. Cuts
+// lower top's strip runs out). No convex edge at least as long as the concave junction may run
+// along the cut (two patches of cfg.min_object_nodes surface nodes or more, one either side,
+// meeting at one: a solid's own faces, a can's lid and side, whose rim is longer than where a
+// taller can beside it touches the lid); a shorter one is where the lower top's strip runs out
+// under a box turned on a larger one, its front meeting the lower box's sides there. Each side
+// must hold at least cfg.min_object_nodes nodes. Cuts
 // repeat until none is left. Returns the new segment of every patch (new ids appended).
 std::vector<std::uint32_t> cut_at_concave_faces(
     const NeighbourGraph& graph, std::vector<std::int32_t>& patch, const std::vector<char>& surface,

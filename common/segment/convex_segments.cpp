@@ -203,10 +203,11 @@ std::vector<std::int32_t> convex_segments(const NeighbourGraph& g, const std::ve
   const auto pairs_of = [&](const std::unordered_map<std::uint64_t, Junction>& judged) {
     JunctionPairs out;
     for (std::uint64_t key : sorted_keys(judged)) {
-      const std::pair<std::uint32_t, std::uint32_t> ab{static_cast<std::uint32_t>(key >> 32),
-                                                       static_cast<std::uint32_t>(key & 0xffffffffu)};
-      if (!is_convex(judged.at(key))) out.concave.push_back(ab);
-      if (is_edge(judged.at(key))) out.edges.push_back(ab);
+      const Junction& j = judged.at(key);
+      const PatchJunction ab{static_cast<std::uint32_t>(key >> 32),
+                             static_cast<std::uint32_t>(key & 0xffffffffu), j.total};
+      if (!is_convex(j)) out.concave.push_back(ab);
+      if (is_edge(j)) out.edges.push_back(ab);
     }
     return out;
   };
