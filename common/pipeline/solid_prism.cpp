@@ -405,9 +405,19 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   if (!(height > 0.0)) return std::nullopt;
 
   // A prism's sides are rectangles the height of the prism: an octahedron's or a pyramid's
-  // triangles, lined up around some axis, fill half of theirs.
-  for (const SideRun& r : ring)
-    if (r.seen && r.hull_area < in.cfg.prism_side_fill * (r.t_hi - r.t_lo) * height) return std::nullopt;
+  // triangles, lined up around some axis, fill half of theirs. A side at a concave corner (an L's
+  // or a T's inner face) of an object alone in its cloud is seen in part where the prism's own arm
+  // stands between it and the sensor, and nothing else could have cut the notch: only the other
+  // sides are held to it there (lined-up triangles make a convex outline). In a scene a notch may
+  // be where a neighbour hid the cap (as for border_notch above), and every side is held to it.
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const SideRun& r = ring[i];
+    const bool at_notch = turn_degrees(polygon, (i + ring.size() - 1) % ring.size()) < 0.0 ||
+                          turn_degrees(polygon, i) < 0.0;
+    if (r.seen && !(in.alone && at_notch) &&
+        r.hull_area < in.cfg.prism_side_fill * (r.t_hi - r.t_lo) * height)
+      return std::nullopt;
+  }
 
   const Eigen::Vector2d centroid = geometry::area_centroid(polygon);
   for (auto& p : polygon) p -= centroid;
