@@ -101,17 +101,33 @@ bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>&
   for (const DetectedPlane* f : faces) all += f->inliers.size();
   const double min_points = in.cfg.box_step_min_share * static_cast<double>(all);
   for (const DetectedPlane* f : faces) {
-    if (static_cast<double>(f->inliers.size()) < min_points || !along_any(f->plane.normal, directions, cos_along))
-      continue;
-    const double depth = step_depth(in, f->plane.normal);
-    // Face points beyond the plane on either side: a bounding face has them all on one.
+    if (static_cast<double>(f->inliers.size()) < min_points) continue;
+    // The plane square to the box direction the face is along, through the face's points: a
+    // piece of a real box's bulging face tilts by up to parallel_degrees, and its own plane then
+    // runs through the faces square to it across a thin box (a cracker box's 6 cm side against
+    // its 21 cm faces), on both sides by more than a tenth of that thickness.
+    const Eigen::Vector3d* along = nullptr;
+    for (const Eigen::Vector3d& d : directions)
+      if (f->plane.normal.dot(d) >= cos_along &&
+          (!along || f->plane.normal.dot(d) > f->plane.normal.dot(*along)))
+        along = &d;
+    if (!along) continue;
+    const double depth = step_depth(in, *along);
+    const double at = face_position(in.cloud, *f, *along);
+    // Face points beyond the plane on either side: a bounding face has them all on one. The
+    // face's own pieces (along the same direction within the depth of it: RANSAC cuts a bulging
+    // face into several) are the face, and their bulge is no step.
     std::size_t above = 0, below = 0;
-    for (const DetectedPlane* g : faces)
+    for (const DetectedPlane* g : faces) {
+      if (g->plane.normal.dot(*along) >= cos_along &&
+          std::abs(face_position(in.cloud, *g, *along) - at) <= depth)
+        continue;
       for (std::uint32_t i : g->inliers) {
-        const double d = f->plane.signed_distance(in.cloud[i]);
+        const double d = in.cloud[i].dot(*along) - at;
         above += d > depth;
         below += d < -depth;
       }
+    }
     if (static_cast<double>(std::min(above, below)) > in.cfg.box_step_share * static_cast<double>(all)) return true;
   }
   return false;

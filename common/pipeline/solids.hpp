@@ -214,9 +214,10 @@ bool slanted_neighbour_face(const SolveInput& in, const std::vector<const Detect
 double step_depth(const SolveInput& in, const Eigen::Vector3d& axis);
 
 // A face along one of `directions` (within acos(cos_along)) holding solve.box_step_min_share of
-// the faces' points with more than solve.box_step_share of them on each side of its plane,
-// farther than step_depth along its normal: the inner face of an
-// L or T, no face of a convex solid.
+// the faces' points with more than solve.box_step_share of them on each side of it, farther than
+// step_depth along that direction from the face's points: the inner face of an L or T, no face of
+// a convex solid. Judged square to the direction, not along the face's own normal: a bulging
+// face's pieces tilt, and their planes run through the faces square to them.
 bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                   const std::vector<Eigen::Vector3d>& directions, double cos_along);
 
