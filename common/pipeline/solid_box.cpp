@@ -64,8 +64,7 @@ bool faces_are_rectangles(const SolveInput& in, const std::vector<const Detected
       const double depth = detail::step_depth(in, d);
       const double at = detail::face_position(in.cloud, *f, d);
       for (const DetectedPlane* g : faces)
-        if (g != f && g->plane.normal.dot(d) >= cos_parallel &&
-            std::abs(detail::face_position(in.cloud, *g, d) - at) <= depth)
+        if (g != f && detail::piece_of_face(in.cloud, *g, d, at, depth, cos_parallel))
           face.inliers.insert(face.inliers.end(), g->inliers.begin(), g->inliers.end());
       break;
     }

@@ -94,6 +94,12 @@ double step_depth(const SolveInput& in, const Eigen::Vector3d& axis) {
   return std::max(in.cfg.box_step_depth * (hi - lo), in.cfg.inlier_distance * in.resolution);
 }
 
+bool piece_of_face(const PointList& cloud, const DetectedPlane& g, const Eigen::Vector3d& direction,
+                   double at, double depth, double cos_along) {
+  return g.plane.normal.dot(direction) >= cos_along &&
+         std::abs(face_position(cloud, g, direction) - at) <= depth;
+}
+
 bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>& faces,
                   const std::vector<Eigen::Vector3d>& directions, double cos_along) {
   if (faces.empty()) return false;
@@ -115,13 +121,10 @@ bool face_is_step(const SolveInput& in, const std::vector<const DetectedPlane*>&
     const double depth = step_depth(in, *along);
     const double at = face_position(in.cloud, *f, *along);
     // Face points beyond the plane on either side: a bounding face has them all on one. The
-    // face's own pieces (along the same direction within the depth of it: RANSAC cuts a bulging
-    // face into several) are the face, and their bulge is no step.
+    // face's own pieces are the face, and their bulge is no step.
     std::size_t above = 0, below = 0;
     for (const DetectedPlane* g : faces) {
-      if (g->plane.normal.dot(*along) >= cos_along &&
-          std::abs(face_position(in.cloud, *g, *along) - at) <= depth)
-        continue;
+      if (piece_of_face(in.cloud, *g, *along, at, depth, cos_along)) continue;
       for (std::uint32_t i : g->inliers) {
         const double d = in.cloud[i].dot(*along) - at;
         above += d > depth;

@@ -339,9 +339,11 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // border has the solid's own sides beyond it: no more than solve.prism_notch_outside_share of
   // the points outside the outline by more than inlier_distance).
   bool border_notch = false;
+  std::vector<char> concave_corner(polygon.size(), 0);
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const double turn = turn_degrees(polygon, i);
     if (std::abs(turn) < in.cfg.prism_min_turn_degrees) return std::nullopt;
+    concave_corner[i] = turn < 0.0;
     if (turn < 0.0 && !ring[i].seen && !ring[(i + 1) % ring.size()].seen) border_notch = true;
   }
   if (border_notch) {
@@ -412,8 +414,7 @@ std::optional<FittedSolid> fit_prism_along(const SolveInput& in, const AxisChoic
   // be where a neighbour hid the cap (as for border_notch above), and every side is held to it.
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const SideRun& r = ring[i];
-    const bool at_notch = turn_degrees(polygon, (i + ring.size() - 1) % ring.size()) < 0.0 ||
-                          turn_degrees(polygon, i) < 0.0;
+    const bool at_notch = concave_corner[(i + ring.size() - 1) % ring.size()] || concave_corner[i];
     if (r.seen && !(in.alone && at_notch) &&
         r.hull_area < in.cfg.prism_side_fill * (r.t_hi - r.t_lo) * height)
       return std::nullopt;

@@ -213,6 +213,12 @@ bool slanted_neighbour_face(const SolveInput& in, const std::vector<const Detect
 // faces_are_rectangles joins pieces of one face within it).
 double step_depth(const SolveInput& in, const Eigen::Vector3d& axis);
 
+// Whether `g` is a piece of the box face at `at` (face_position) along `direction`: along it
+// (within acos(cos_along)) and within `depth` (step_depth) of it. RANSAC cuts a real box's
+// bulging face into pieces a few millimetres apart and tilted a few degrees.
+bool piece_of_face(const PointList& cloud, const DetectedPlane& g, const Eigen::Vector3d& direction,
+                   double at, double depth, double cos_along);
+
 // A face along one of `directions` (within acos(cos_along)) holding solve.box_step_min_share of
 // the faces' points with more than solve.box_step_share of them on each side of it, farther than
 // step_depth along that direction from the face's points: the inner face of an L or T, no face of
