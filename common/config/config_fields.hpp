@@ -31,6 +31,7 @@ void visit_fields(PreprocessConfig& c, F&& f) {
   f("smoothing_neighbours", c.smoothing_neighbours);
   f("smoothing_max_curvature", c.smoothing_max_curvature);
   f("noise_resolution", c.noise_resolution);
+  f("free_space_reach", c.free_space_reach);
 }
 
 template <class F>
@@ -170,6 +171,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("extent_hull_samples", c.extent_hull_samples);
   f("solid_min_scan_lines", c.solid_min_scan_lines);
   f("scan_noise_ratio", c.scan_noise_ratio);
+  f("free_space_max_share", c.free_space_max_share);
   f("apex_gap", c.apex_gap);
   f("cone_tip_gap", c.cone_tip_gap);
   f("frustum_min_taper", c.frustum_min_taper);

@@ -42,6 +42,8 @@ struct PreprocessConfig {
   std::int64_t smoothing_neighbours = 16;
   double smoothing_max_curvature = 0.01;  // only neighbourhoods flatter than this are smoothed
   double noise_resolution = 3.0;  // a depth image's pixels noisy on their own: an object's resolution at least this many times its points' noise (0: off)
+  double free_space_reach = 3.0;  // a lidar object carries the frame's returns within this many
+                                  // times its own angular radius (solve.free_space_max_share)
 };
 
 struct PlanesConfig {
@@ -184,6 +186,7 @@ struct SolveConfig {
   std::int64_t extent_hull_samples = 2000;  // points the extent's minimum-area rectangles are chosen from (its bounds take every point)
   std::int64_t solid_min_scan_lines = 5;  // a lidar object on fewer scan lines is tried as a sphere only ...
   double scan_noise_ratio = 3.0;         // ... and its solid leaves the points at most this many times their noise from it (0: off)
+  double free_space_max_share = 0.05;    // ... and is unknown where more than this share of the rays crossing it return from beyond it (0: off)
   double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
   double cone_tip_gap = 0.2;             // ... and no cone either when its points stop this share short of the apex, ringing it or not (a frustum seen from one side)
   double frustum_min_taper = 0.2;        // a frustum's radii differ by at least this share of the larger (less: a cylinder's)

@@ -91,6 +91,7 @@ std::vector<msg::FilteredCloud> filtered_clouds(const msg::CloudHeader& header, 
     if (count != 0) {
       o.cloud().resolution(objects[i].resolution);
       o.cloud().scan_lines(objects[i].scan_lines);
+      o.cloud().returns_about(to_xyz(objects[i].returns_about));
     }
     set_viewpoint(o.cloud(), clouds.viewpoint);
     out.push_back(std::move(o));

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "pipeline/free_space.hpp"
 #include "pipeline/surface_noise.hpp"
 #include "segment/segment_scene.hpp"
 
@@ -61,8 +62,11 @@ ObjectClouds object_clouds(const PointList& raw, const GridLayout& grid, const c
     }
     out.scene.outliers_removed += p.outliers_removed;
     out.scene.points.insert(out.scene.points.end(), p.points.begin(), p.points.end());
-    out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k]), std::move(p.tree),
-                           scene.scan_lines[k]});
+    PointList about;
+    if (scene.scan_lines[k] > 0 && scene.viewpoint && pre.free_space_reach > 0.0)
+      about = returns_about(raw, p.points, *scene.viewpoint, pre.free_space_reach);
+    out.objects.push_back({std::move(p.points), p.resolution, std::move(scene.objects[k]),
+                           std::move(p.tree), scene.scan_lines[k], std::move(about)});
   }
   return out;
 }

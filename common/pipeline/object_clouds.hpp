@@ -23,6 +23,10 @@ struct ObjectCloud {
   std::vector<std::uint32_t> raw_indices;  // into the raw cloud
   std::shared_ptr<const geometry::KdTree> tree;  // over `points`, for every stage's neighbours
   std::uint32_t scan_lines = 0;  // in a lidar frame, the scan lines it lies on; 0 elsewhere
+  // In a lidar frame, the frame's returns about it (its own among them), within
+  // PreprocessConfig::free_space_reach of its angular radius: the rays that measured free space
+  // beside and behind it (solve.free_space_max_share); empty elsewhere.
+  PointList returns_about;
 };
 
 struct ObjectClouds {

@@ -71,8 +71,9 @@ RecognitionResult recognize_cloud(const PointList& points, const GridLayout& gri
     t.keypoints_ms = object_clock.lap_ms();
     const Classification cls = classify_cloud(o.points, planes, keypoints, o.resolution, cfg.classify);
     t.classify_ms = object_clock.lap_ms();
-    objects[begin] = solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve, &tree, clouds.viewpoint,
-                                  clouds.objects.size(), o.scan_lines, pool);
+    objects[begin] =
+        solve_object(o.points, planes, keypoints, cls, o.resolution, cfg.solve, &tree,
+                     clouds.viewpoint, clouds.objects.size(), o.scan_lines, pool, &o.returns_about);
     objects[begin].point_indices = o.raw_indices;
     t.solve_ms = object_clock.lap_ms();
   });

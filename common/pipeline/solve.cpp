@@ -9,6 +9,7 @@
 
 #include "geometry/oriented_box.hpp"
 #include "pipeline/container.hpp"
+#include "pipeline/free_space.hpp"
 #include "pipeline/scan_fit.hpp"
 #include "pipeline/solid_checks.hpp"
 #include "pipeline/solids.hpp"
@@ -30,6 +31,21 @@ Extent extent_of(const PointList& cloud, const std::vector<Eigen::Matrix3d>& hin
       cloud, hints, static_cast<std::size_t>(std::max<std::int64_t>(3, cfg.extent_hull_samples)),
       pool);
   return {box.center, box.axes, box.size};
+}
+
+// The radius of a ball about the solid's centre that holds it: the sum of its lengths (a box's
+// half-diagonal is less, a cone's apex and rim lie within height plus radius of its base centre),
+// or a prism's cross-section radius plus its height.
+double reach_of(const FittedSolid& s) {
+  double reach = 0.0;
+  for (const auto& [name, value] : s.dimensions)
+    if (name != "sides") reach += value;
+  if (!s.polygon.empty()) {
+    double widest = 0.0;
+    for (const Eigen::Vector2d& v : s.polygon) widest = std::max(widest, v.norm());
+    reach = std::max(reach, widest + s.dimensions.front().second);
+  }
+  return reach;
 }
 
 }  // namespace
@@ -55,9 +71,10 @@ bool frustum_may_matter(const std::vector<double>& explained, double margin) {
 
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
-                          double resolution, const config::SolveConfig& cfg, const geometry::KdTree* tree,
-                          const std::optional<Point>& viewpoint, std::size_t objects_in_cloud,
-                          std::uint32_t scan_lines, parallel::ThreadPool* pool) {
+                          double resolution, const config::SolveConfig& cfg,
+                          const geometry::KdTree* tree, const std::optional<Point>& viewpoint,
+                          std::size_t objects_in_cloud, std::uint32_t scan_lines,
+                          parallel::ThreadPool* pool, const PointList* returns_about) {
   ObjectResult out;
   out.keypoints = classification.counts;
   // Even with no solid, where the points are is worth telling (a consumer tracks or avoids them).
@@ -346,6 +363,25 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(buf, sizeof buf,
                     ": the best solid (%s) leaves the points %.1f times their noise from it",
                     shape_name(chosen->first.shape).c_str(), noise > 0.0 ? scatter / noise : 0.0);
+      return unknown(lines() + buf);
+    }
+  }
+  // A lidar object's solid must stand where the sensor saw no free space: on a few scan lines a fit
+  // is free between and beyond them (a ball 0.5 m wide for a can 0.35 m wide, a box across a wall
+  // strip), and the frame's rays beside and behind it measure where it is not. The right solid lets
+  // none of the rays that cross it through (a depth image's outline, seen densely, bounds its fit
+  // itself).
+  if (scan_lines > 0 && viewpoint && returns_about != nullptr && cfg.free_space_max_share > 0.0) {
+    const FittedSolid& f = chosen->first;
+    const RaysThroughSolid rays = rays_through_solid(*returns_about, *viewpoint, f.signed_distance,
+                                                     f.center, reach_of(f), tolerance);
+    if (static_cast<double>(rays.through) >
+        cfg.free_space_max_share * static_cast<double>(rays.crossing)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf,
+                    ": the sensor saw through the best solid (%s): %.0f%% of the rays crossing it",
+                    shape_name(f.shape).c_str(),
+                    100.0 * static_cast<double>(rays.through) / static_cast<double>(rays.crossing));
       return unknown(lines() + buf);
     }
   }

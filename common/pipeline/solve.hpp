@@ -25,14 +25,18 @@ namespace cloudshape::pipeline {
 // alone (solid_prism.cpp: nothing beside it could have hidden that stretch of the cap).
 // `scan_lines`: the lidar scan lines the object lies on (0: not a lidar frame). Two lines are two
 // curves across the object: they fix a sphere (two circles of it) and no other solid, whose
-// extent between and beyond them they leave open; on two, only a sphere is tried. A `pool` fits
-// the candidates, and searches the extent from its starts, side by side: the same result.
+// extent between and beyond them they leave open; on two, only a sphere is tried. There
+// `returns_about` (ObjectCloud::returns_about: the frame's returns about the object) weighs the
+// solid chosen against the free space the sensor measured (cfg.free_space_max_share). A `pool`
+// fits the candidates, and searches the extent from its starts, side by side: the same result.
 ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& planes,
                           const KeypointSet& keypoints, const Classification& classification,
                           double resolution, const config::SolveConfig& cfg,
                           const geometry::KdTree* tree = nullptr,
-                          const std::optional<Point>& viewpoint = std::nullopt, std::size_t objects_in_cloud = 1,
-                          std::uint32_t scan_lines = 0, parallel::ThreadPool* pool = nullptr);
+                          const std::optional<Point>& viewpoint = std::nullopt,
+                          std::size_t objects_in_cloud = 1, std::uint32_t scan_lines = 0,
+                          parallel::ThreadPool* pool = nullptr,
+                          const PointList* returns_about = nullptr);
 
 namespace detail {
 // Whether a frustum's fit can change which solid solve_object chooses among the others, given the

@@ -53,10 +53,12 @@ int main(int argc, char** argv) {
           const cs::pipeline::PlaneSegmentation seg = cs::dds::from_msg(in.segmentation());
           const cs::pipeline::KeypointSet keypoints = cs::dds::from_msg(in.keypoints());
           const cs::pipeline::Classification cls = cs::dds::from_msg(in.classification());
+          const cs::PointList returns_about = cs::dds::from_xyz(in.cloud().returns_about());
           const auto start = std::chrono::steady_clock::now();
           const cs::pipeline::ObjectResult object = cs::pipeline::solve_object(
               points, seg, keypoints, cls, in.cloud().resolution(), cfg.solve, nullptr,
-              cs::dds::viewpoint_of(in.cloud()), in.header().object_count(), in.cloud().scan_lines(), &pool);
+              cs::dds::viewpoint_of(in.cloud()), in.header().object_count(),
+              in.cloud().scan_lines(), &pool, &returns_about);
           cs::msg::ShapeResult out = result_header(in);
           out.header().timings().solve_ms(cs::service::elapsed_ms(start));
           out.objects().push_back(cs::dds::to_msg(object));

@@ -92,8 +92,9 @@ TEST(IngestSample, NonFinitePointsAreDroppedAndTheRestProcessedAsRecognizeDoes) 
 }
 
 // A lidar frame's objects carry the scan lines they lie on, as recognize_cloud's segmentation
-// counts them (the solver names only a sphere on two): the same counts, and at least one object on
-// two or more lines (the ball).
+// counts them (the solver names only a sphere on two), and the frame's returns about them (the
+// solver's free-space test): the same counts and returns, and at least one object on two or more
+// lines (the ball).
 TEST(IngestSample, ALidarFramesObjectsCarryTheirScanLines) {
   const PointList frame = testing::lidar_frame(1, 32);
   std::vector<double> xyz;
@@ -105,6 +106,10 @@ TEST(IngestSample, ALidarFramesObjectsCarryTheirScanLines) {
   std::uint32_t most = 0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     EXPECT_EQ(out[i].cloud().scan_lines(), expected.objects[i].scan_lines) << i;
+    EXPECT_EQ(from_xyz(out[i].cloud().returns_about()), expected.objects[i].returns_about) << i;
+    if (out[i].cloud().scan_lines() > 0) {
+      EXPECT_FALSE(expected.objects[i].returns_about.empty()) << i;
+    }
     most = std::max(most, out[i].cloud().scan_lines());
   }
   EXPECT_GE(most, 2u);

@@ -216,10 +216,12 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
 // clutter: those on fewer beams than a solid needs (segment.scan_object_min_beams) or mostly within
 // a structure plane's band (segment.scan_leftover_share) are dropped, and a solid that leaves its
 // points scattered by more than solve.scan_noise_ratio times their noise along the rings is no
-// answer, and an object on fewer beams than solve.solid_min_scan_lines (5) is tried as a sphere
-// only, so few named solids remain beside the sphere (measured: 3, two cylinders and a sphere; 8
-// while objects on three and four beams were fitted any solid; bound 5: a margin of 2 for other
-// RANSAC draws). Spheres 1.8 and 5.6 m from the calibration sphere, their points 6.5 and 7.2 times
+// answer, an object on fewer beams than solve.solid_min_scan_lines (5) is tried as a sphere
+// only, and a solid the sensor saw through is no answer either (solve.free_space_max_share: two
+// cylinders of wall strips, 57-61% of their crossing rays returning from beyond them), so few named
+// solids remain beside the sphere (measured: 1, a sphere; 3 without the free-space test, 8 while
+// objects on three and four beams were fitted any solid; bound 2: a margin of 1 for other RANSAC
+// draws). Spheres 1.8 and 5.6 m from the calibration sphere, their points 6.5 and 7.2 times
 // their noise from them (the calibration sphere's: 1.4), are no answer: no sphere but that one is
 // named within 5 m of it.
 TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
@@ -236,7 +238,7 @@ TEST(RealScan, LidarFrameNamesFewSolidsBesideTheSphere) {
     }
   }
   EXPECT_EQ(spheres_there, 1u);
-  EXPECT_LE(named_elsewhere, 5u);
+  EXPECT_LE(named_elsewhere, 2u);
   for (const auto& o : result.objects) {
     const double off = (o.center - centre).norm();
     if (o.shape == "sphere" && off >= 0.05) {
