@@ -379,7 +379,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
         cfg.free_space_max_share * static_cast<double>(rays.crossing)) {
       char buf[200];
       std::snprintf(buf, sizeof buf,
-                    ": the sensor saw through the best solid (%s): %.0f%% of the rays crossing it",
+                    ": the sensor saw through the best solid (%s): %.0f%% of the rays crossing it "
+                    "return from beyond it",
                     shape_name(f.shape).c_str(),
                     100.0 * static_cast<double>(rays.through) / static_cast<double>(rays.crossing));
       return unknown(lines() + buf);

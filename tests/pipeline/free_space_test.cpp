@@ -10,43 +10,46 @@ namespace cloudshape::pipeline {
 namespace {
 
 const Point kSensor = Point::Zero();
+const Point kCentre(0.0, 0.0, 10.0);
 
 // A ball of radius 1 centred 10 ahead of the sensor.
-double ball(const Point& p) { return (p - Point(0.0, 0.0, 10.0)).norm() - 1.0; }
+double ball(const Point& p) { return (p - kCentre).norm() - 1.0; }
 
 // The point at `range` along the ray towards (x, y, 10).
 Point along(double x, double y, double range) { return range * Point(x, y, 10.0).normalized(); }
 
-TEST(RaysThroughSolid, ReturnsOnTheNearSideCrossButDoNotPassThrough) {
+RaysThroughSolid through_ball(const PointList& returns) {
+  return rays_through_solid(returns, kSensor, ball, kCentre, 1.0, 0.05);
+}
+
+// Eleven rays across the ball's middle (x from -0.5 to 0.5 at z = 10), each returning at `range`,
+// or where it meets the ball for a range of 0.
+PointList fan(double range) {
   PointList returns;
-  for (double x = -0.5; x <= 0.5; x += 0.1) {
-    const Point dir = Point(x, 0.0, 10.0).normalized();
+  for (int i = -5; i <= 5; ++i) {
+    const Point dir = Point(0.1 * i, 0.0, 10.0).normalized();
     // Where the ray meets the ball: |t dir - c|^2 = 1.
-    const double b = dir.z() * 10.0;
-    const double t = b - std::sqrt(b * b - 99.0);
-    returns.push_back(t * dir);
+    const double b = dir.dot(kCentre);
+    returns.push_back((range > 0.0 ? range : b - std::sqrt(b * b - 99.0)) * dir);
   }
-  const RaysThroughSolid rays =
-      rays_through_solid(returns, kSensor, ball, Point(0.0, 0.0, 10.0), 1.0, 0.05);
-  EXPECT_EQ(rays.crossing, returns.size());
+  return returns;
+}
+
+TEST(RaysThroughSolid, ReturnsOnTheNearSideCrossButDoNotPassThrough) {
+  const RaysThroughSolid rays = through_ball(fan(0.0));
+  EXPECT_EQ(rays.crossing, 11u);
   EXPECT_EQ(rays.through, 0u);
 }
 
 TEST(RaysThroughSolid, ReturnsFromAWallBehindPassThrough) {
-  PointList returns;
-  for (double x = -0.5; x <= 0.5; x += 0.1) returns.push_back(along(x, 0.0, 20.0));
-  const RaysThroughSolid rays =
-      rays_through_solid(returns, kSensor, ball, Point(0.0, 0.0, 10.0), 1.0, 0.05);
-  EXPECT_EQ(rays.crossing, returns.size());
-  EXPECT_EQ(rays.through, returns.size());
+  const RaysThroughSolid rays = through_ball(fan(20.0));
+  EXPECT_EQ(rays.crossing, 11u);
+  EXPECT_EQ(rays.through, 11u);
 }
 
 TEST(RaysThroughSolid, ReturnsFromAnOccluderInFrontDoNotPassThrough) {
-  PointList returns;
-  for (double x = -0.5; x <= 0.5; x += 0.1) returns.push_back(along(x, 0.0, 5.0));
-  const RaysThroughSolid rays =
-      rays_through_solid(returns, kSensor, ball, Point(0.0, 0.0, 10.0), 1.0, 0.05);
-  EXPECT_EQ(rays.crossing, returns.size());
+  const RaysThroughSolid rays = through_ball(fan(5.0));
+  EXPECT_EQ(rays.crossing, 11u);
   EXPECT_EQ(rays.through, 0u);
 }
 
@@ -57,8 +60,7 @@ TEST(RaysThroughSolid, RaysBesideOrGrazingTheSolidCountForNeither) {
   returns.push_back(along(0.0, -3.0, 20.0));
   // Grazing its rim: the ray passes 0.99 from the centre, so at most 0.01 inside, within the depth.
   returns.push_back(along(0.99 * 10.0 / std::sqrt(100.0 - 0.99 * 0.99), 0.0, 20.0));
-  const RaysThroughSolid rays =
-      rays_through_solid(returns, kSensor, ball, Point(0.0, 0.0, 10.0), 1.0, 0.05);
+  const RaysThroughSolid rays = through_ball(returns);
   EXPECT_EQ(rays.crossing, 0u);
   EXPECT_EQ(rays.through, 0u);
 }

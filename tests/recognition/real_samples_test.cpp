@@ -218,7 +218,7 @@ TEST(RealScan, LidarCalibrationSphereAmongGroundAndWalls) {
 // points scattered by more than solve.scan_noise_ratio times their noise along the rings is no
 // answer, an object on fewer beams than solve.solid_min_scan_lines (5) is tried as a sphere
 // only, and a solid the sensor saw through is no answer either (solve.free_space_max_share: two
-// cylinders of wall strips, 57-61% of their crossing rays returning from beyond them), so few named
+// cylinders of wall strips, 56-61% of their crossing rays returning from beyond them), so few named
 // solids remain beside the sphere (measured: 1, a sphere; 3 without the free-space test, 8 while
 // objects on three and four beams were fitted any solid; bound 2: a margin of 1 for other RANSAC
 // draws). Spheres 1.8 and 5.6 m from the calibration sphere, their points 6.5 and 7.2 times
