@@ -185,14 +185,18 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in) {
   return cone;
 }
 
-std::optional<FittedSolid> cone_closing_frustum(const SolveInput& in, const FittedSolid& frustum) {
+std::optional<FittedSolid> cone_of_frustum(const FittedSolid& frustum) {
   if (frustum.shape != Shape::frustum || frustum.dimensions.size() < 3) return std::nullopt;
   const double radius = frustum.dimensions[0].second, top = frustum.dimensions[1].second;
   const double height = frustum.dimensions[2].second;
   if (!(radius > top) || !(height > 0.0)) return std::nullopt;
-  FittedSolid cone = make_cone(frustum.center, frustum.axes.row(0).transpose(), radius,
-                               height * radius / (radius - top));
-  if (cut_short(in, cone)) return std::nullopt;
+  return make_cone(frustum.center, frustum.axes.row(0).transpose(), radius,
+                   height * radius / (radius - top));
+}
+
+std::optional<FittedSolid> cone_closing_frustum(const SolveInput& in, const FittedSolid& frustum) {
+  std::optional<FittedSolid> cone = cone_of_frustum(frustum);
+  if (cone && cut_short(in, *cone)) return std::nullopt;
   return cone;
 }
 

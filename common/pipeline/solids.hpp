@@ -115,10 +115,12 @@ std::optional<FittedSolid> fit_cone(const SolveInput& in);
 // weighs every point.
 std::optional<FittedSolid> fit_cone_from_side(const SolveInput& in);
 // The cone a fitted frustum's side comes to: its base and axis, its apex where the side's radius
-// comes to nothing; none where the points stop short of that apex (solve.apex_gap,
-// solve.cone_tip_gap, as fit_cone's: a frustum's side seen from one side stops at its smaller
-// rim). Under a depth camera's noise the points about a cone's tip lie off its axis on every side,
-// and the side fitted through them ends in a top of a few millimetres.
+// comes to nothing (none for a frustum that does not narrow).
+std::optional<FittedSolid> cone_of_frustum(const FittedSolid& frustum);
+// The same, none where the points stop short of that apex (solve.apex_gap, solve.cone_tip_gap, as
+// fit_cone's: a frustum's side seen from one side stops at its smaller rim). Under a depth camera's
+// noise the points about a cone's tip lie off its axis on every side, and the side fitted through
+// them ends in a top of a few millimetres.
 std::optional<FittedSolid> cone_closing_frustum(const SolveInput& in, const FittedSolid& frustum);
 std::optional<FittedSolid> fit_sphere_solid(const SolveInput& in);
 // A truncated cone from a cap and its straight side; only where the taper is real

@@ -371,12 +371,33 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // strip), and the frame's rays beside and behind it measure where it is not. The right solid lets
   // none of the rays that cross it through (a depth image's outline, seen densely, bounds its fit
   // itself).
-  if (scan_lines > 0 && viewpoint && returns_about != nullptr && cfg.free_space_max_share > 0.0) {
-    const FittedSolid& f = chosen->first;
+  const bool weigh_free_space =
+      scan_lines > 0 && viewpoint && returns_about != nullptr && cfg.free_space_max_share > 0.0;
+  const auto seen_through = [&](const FittedSolid& f) {
     const RaysThroughSolid rays = rays_through_solid(*returns_about, *viewpoint, f.signed_distance,
                                                      f.center, reach_of(f), tolerance);
-    if (static_cast<double>(rays.through) >
-        cfg.free_space_max_share * static_cast<double>(rays.crossing)) {
+    return std::pair{rays, static_cast<double>(rays.through) >
+                               cfg.free_space_max_share * static_cast<double>(rays.crossing)};
+  };
+  // On a few scan lines a cone's tip lies between them, unseen (fit_cone's test that a side seen at
+  // all reaches its tip holds for a dense sensor only): there the rays, not the points, say whether
+  // the tip is there, and a frustum whose cone explains as many points (cfg.preferred_margin) and
+  // stands where the sensor saw no free space is that cone, a parameter fewer.
+  if (weigh_free_space && chosen->first.shape == Shape::frustum) {
+    if (std::optional<FittedSolid> cone = cone_of_frustum(chosen->first)) {
+      const Verification v =
+          verify(cloud, *cone, tolerance, static_cast<std::size_t>(cfg.verify_samples));
+      if (v.explained >= chosen->second.explained - cfg.preferred_margin &&
+          !seen_through(*cone).second) {
+        fitted.emplace_back(std::move(*cone), v);
+        chosen = &fitted.back();
+      }
+    }
+  }
+  if (weigh_free_space) {
+    const FittedSolid& f = chosen->first;
+    const auto [rays, through] = seen_through(f);
+    if (through) {
       char buf[200];
       std::snprintf(buf, sizeof buf,
                     ": the sensor saw through the best solid (%s): %.0f%% of the rays crossing it "
