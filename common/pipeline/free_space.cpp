@@ -4,6 +4,11 @@
 #include <cmath>
 
 namespace cloudshape::pipeline {
+namespace {
+
+constexpr double kHalfPi = 1.57079632679489661923;
+
+}  // namespace
 
 RaysThroughSolid rays_through_solid(const PointList& returns, const Point& sensor,
                                     const std::function<double(const Point&)>& signed_distance,
@@ -54,7 +59,7 @@ PointList returns_about(const PointList& frame, const PointList& points, const P
     if (d.allFinite()) min_cos = std::min(min_cos, d.dot(axis));
   }
   const double widest = std::acos(std::clamp(min_cos, -1.0, 1.0));
-  const double limit = std::cos(std::min(0.5 * 3.14159265358979323846, factor * widest));
+  const double limit = std::cos(std::min(kHalfPi, factor * widest));
   // Within the angle: d.axis >= limit |d|, both sides non-negative, so squared (no root per
   // return).
   const double limit_squared = limit * limit;

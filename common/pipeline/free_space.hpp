@@ -11,9 +11,10 @@
 namespace cloudshape::pipeline {
 
 struct RaysThroughSolid {
-  std::size_t crossing = 0;  // rays running deeper than the depth inside the solid
-  std::size_t through =
-      0;  // of those, rays that return more than the depth beyond where they enter
+  // Rays running deeper than the depth inside the solid.
+  std::size_t crossing = 0;
+  // Of those, rays that return more than the depth beyond where they enter it.
+  std::size_t through = 0;
 };
 
 // The rays from `sensor` to each of `returns` whose direction comes within the solid's reach (a

@@ -373,31 +373,36 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // itself).
   const bool weigh_free_space =
       scan_lines > 0 && viewpoint && returns_about != nullptr && cfg.free_space_max_share > 0.0;
-  const auto seen_through = [&](const FittedSolid& f) {
-    const RaysThroughSolid rays = rays_through_solid(*returns_about, *viewpoint, f.signed_distance,
-                                                     f.center, reach_of(f), tolerance);
-    return std::pair{rays, static_cast<double>(rays.through) >
-                               cfg.free_space_max_share * static_cast<double>(rays.crossing)};
+  const auto rays_through = [&](const FittedSolid& f) {
+    return rays_through_solid(*returns_about, *viewpoint, f.signed_distance, f.center, reach_of(f),
+                              tolerance);
+  };
+  const auto seen_through = [&](const RaysThroughSolid& rays) {
+    return static_cast<double>(rays.through) >
+           cfg.free_space_max_share * static_cast<double>(rays.crossing);
   };
   // On a few scan lines a cone's tip lies between them, unseen (fit_cone's test that a side seen at
   // all reaches its tip holds for a dense sensor only): there the rays, not the points, say whether
   // the tip is there, and a frustum whose cone explains as many points (cfg.preferred_margin) and
-  // stands where the sensor saw no free space is that cone, a parameter fewer.
+  // stands where the sensor saw no free space is that cone, a parameter fewer (and weighed
+  // already).
+  bool weighed = false;
   if (weigh_free_space && chosen->first.shape == Shape::frustum) {
     if (std::optional<FittedSolid> cone = cone_of_frustum(chosen->first)) {
       const Verification v =
           verify(cloud, *cone, tolerance, static_cast<std::size_t>(cfg.verify_samples));
       if (v.explained >= chosen->second.explained - cfg.preferred_margin &&
-          !seen_through(*cone).second) {
+          !seen_through(rays_through(*cone))) {
         fitted.emplace_back(std::move(*cone), v);
         chosen = &fitted.back();
+        weighed = true;
       }
     }
   }
-  if (weigh_free_space) {
+  if (weigh_free_space && !weighed) {
     const FittedSolid& f = chosen->first;
-    const auto [rays, through] = seen_through(f);
-    if (through) {
+    const RaysThroughSolid rays = rays_through(f);
+    if (seen_through(rays)) {
       char buf[200];
       std::snprintf(buf, sizeof buf,
                     ": the sensor saw through the best solid (%s): %.0f%% of the rays crossing it "
