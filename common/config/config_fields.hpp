@@ -172,6 +172,8 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("solid_min_scan_lines", c.solid_min_scan_lines);
   f("scan_noise_ratio", c.scan_noise_ratio);
   f("free_space_max_share", c.free_space_max_share);
+  f("off_surface_max_share", c.off_surface_max_share);
+  f("off_surface_distance", c.off_surface_distance);
   f("apex_gap", c.apex_gap);
   f("cone_tip_gap", c.cone_tip_gap);
   f("frustum_min_taper", c.frustum_min_taper);

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "geometry/kdtree.hpp"
 #include "geometry/point_cloud.hpp"
 #include "pipeline/planes.hpp"
 #include "pipeline/solids.hpp"
@@ -32,6 +33,16 @@ double plane_share(const PointList& cloud, double tolerance, std::size_t max_sam
 // caps with almost no side.
 double cylinder_side_share(const PointList& cloud, const FittedSolid& solid, double tolerance,
                            std::size_t max_samples);
+
+// Share of the points (the same sample as verify's) lying more than `far` inside the solid whose
+// nearest neighbours (`tree` over `cloud`) mostly lie inside beyond `tolerance` too: a stretch of
+// surface the solid encloses without following it (a capsule's domes within a cylinder's caps, a
+// torus's hole). A point counts only with a neighbour within `tolerance` (on a surface sampled
+// at half of it or finer) and three quarters of its 8 nearest inside beyond `tolerance`: strays
+// are far apart, and independent noise seldom puts most of a point's neighbours inside with it.
+double off_surface_share(const PointList& cloud, const geometry::KdTree& tree,
+                         const FittedSolid& solid, double far, double tolerance,
+                         std::size_t max_samples);
 
 // Share of the 26 direction sectors around the solid's centre (in its own frame: faces,
 // edges and corners of a cube) that hold points. A convex solid seen whole is hit by rays

@@ -66,6 +66,27 @@ SolidMesh local_mesh(NegativeKind kind, std::mt19937_64& rng, double size) {
       return polyhedron({{a, 0, 0}, {-a, 0, 0}, {0, b, 0}, {0, -b, 0}, {0, 0, c}, {0, 0, -c}},
                         {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
     }
+    case NegativeKind::capsule: {
+      // A cylinder's side between two hemispheres, rows evenly spaced along the profile's arc
+      // length: a dome of a quarter turn, the straight side, the other dome.
+      const double radius = size * (0.2 + 0.1 * u(rng)), straight = size - 2.0 * radius;
+      const double dome = 0.5 * kPi * radius, profile = 2.0 * dome + straight;
+      return grid_surface(96, 96, true, [&](double s, double t) {
+        const double along = t * profile, phi = 2.0 * kPi * s;
+        double r = radius, z = 0.0;
+        if (along < dome) {
+          r = radius * std::sin(along / radius);
+          z = -0.5 * straight - radius * std::cos(along / radius);
+        } else if (along < dome + straight) {
+          z = along - dome - 0.5 * straight;
+        } else {
+          const double a = (along - dome - straight) / radius;
+          r = radius * std::cos(a);
+          z = 0.5 * straight + radius * std::sin(a);
+        }
+        return Point(r * std::cos(phi), r * std::sin(phi), z);
+      });
+    }
   }
   return {};
 }
@@ -74,7 +95,8 @@ SolidMesh local_mesh(NegativeKind kind, std::mt19937_64& rng, double size) {
 
 const std::vector<NegativeKind>& all_negative_kinds() {
   static const std::vector<NegativeKind> kinds = {NegativeKind::ellipsoid, NegativeKind::torus,
-                                                  NegativeKind::square_pyramid, NegativeKind::octahedron};
+                                                  NegativeKind::square_pyramid,
+                                                  NegativeKind::octahedron, NegativeKind::capsule};
   return kinds;
 }
 
@@ -84,6 +106,8 @@ std::string to_string(NegativeKind kind) {
     case NegativeKind::torus: return "torus";
     case NegativeKind::square_pyramid: return "square_pyramid";
     case NegativeKind::octahedron: return "octahedron";
+    case NegativeKind::capsule:
+      return "capsule";
   }
   return "negative";
 }

@@ -34,3 +34,28 @@ TEST(Negatives, OctahedronIsUnknown) {
 
 }  // namespace
 }  // namespace cloudshape::newshapes
+
+namespace cloudshape::newshapes {
+namespace {
+
+// A cylinder explains a capsule's side and its domes' rims (most of the points), but encloses the
+// domes' middles without following them (solve.off_surface_max_share): with that test off, four
+// of these six capsules are cylinders (no solid explains the other two, of the widest domes).
+TEST(Negatives, CapsuleIsUnknownAndACylinderWithoutTheEnclosedSurfaceTest) {
+  const std::vector<std::uint64_t> seeds = {21, 22, 23, 24, 25, 26};
+  expect_unknown(synth::NegativeKind::capsule, seeds);
+  config::PipelineConfig off = shipped_config();
+  off.solve.off_surface_max_share = 0.0;
+  int cylinders = 0;
+  for (std::uint64_t seed : seeds) {
+    std::mt19937_64 rng(seed);
+    const synth::SolidMesh mesh =
+        synth::random_negative_solid(synth::NegativeKind::capsule, rng, 100.0);
+    const pipeline::ObjectResult o = recognise_one(sample(mesh, 15000, 0.005, seed), off);
+    cylinders += o.shape == "cylinder" ? 1 : 0;
+  }
+  EXPECT_GE(cylinders, 4);
+}
+
+}  // namespace
+}  // namespace cloudshape::newshapes

@@ -33,8 +33,15 @@ PointList sample_view(const synth::SolidMesh& mesh, std::size_t points, double n
   return cloud;
 }
 
+config::PipelineConfig shipped_config() {
+  return config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+}
+
 pipeline::ObjectResult recognise_one(const PointList& cloud) {
-  const config::PipelineConfig cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
+  return recognise_one(cloud, shipped_config());
+}
+
+pipeline::ObjectResult recognise_one(const PointList& cloud, const config::PipelineConfig& cfg) {
   const pipeline::RecognitionResult r = pipeline::recognize_cloud(cloud, cfg, "test");
   EXPECT_EQ(r.objects.size(), 1u);
   return r.objects.empty() ? pipeline::ObjectResult{} : r.objects.front();

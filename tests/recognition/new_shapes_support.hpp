@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "config/pipeline_config.hpp"
 #include "pipeline/result.hpp"
 #include "synth/mesh_solids.hpp"
 
@@ -18,8 +19,12 @@ PointList sample(const synth::SolidMesh& mesh, std::size_t points, double noise,
 PointList sample_view(const synth::SolidMesh& mesh, std::size_t points, double noise, const Eigen::Vector3d& camera,
                       std::uint64_t seed);
 
-// recognize_cloud with config/pipeline.yaml; the cloud must give exactly one object.
+// recognize_cloud with config/pipeline.yaml (or `cfg`); the cloud must give exactly one object.
 pipeline::ObjectResult recognise_one(const PointList& cloud);
+pipeline::ObjectResult recognise_one(const PointList& cloud, const config::PipelineConfig& cfg);
+
+// config/pipeline.yaml as shipped.
+config::PipelineConfig shipped_config();
 
 // A frustum's proportions: the larger end's radius, the smaller end's, the height.
 struct FrustumCase {

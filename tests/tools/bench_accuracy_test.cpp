@@ -54,7 +54,8 @@ const std::vector<Gate>& gates() {
       // outliers: 100 / 98.9; 0.291%, 1.115% / 0.46%, 2.15%; 0.126% / 0.17%; 0.169 / 0.19;
       // 0, 0
       {"outliers", 180, 95.5, 0.0090, 0.0430, 0.0035, 0.40, 1, 1},
-      // density: 96.7 / 100 (capped, 6 of 30 prisms come out as boxes); 0.009%, 0.049% /
+      // density: 96.7 / 100 (capped, 6 of 30 prisms unknown: 5 of them boxes that enclosed their
+      // slanted faces before solve.off_surface_max_share); 0.009%, 0.049% /
       // 0.01%, 0.07%; 0.004% / 0.00%; 0.009 / 0.01; false 3 / 2, missed 0
       {"density", 180, 93.5, 0.0002, 0.0015, 0.0001, 0.05, 4, 1},
       // single_view: 92.2 / 92.2 (14 unknown); 0.296%, 0.665% / 0.26%, 0.55%; 0.191% / 0.14%;
@@ -69,10 +70,11 @@ const std::vector<Gate>& gates() {
       // real (15 samples at 20k points, not capped): 15/15 / 15/15; 0.210%, 1.092% / 0.21%,
       // 1.09%; 0, 0
       {"real", 15, 97.0, 0.0045, 0.0220, -1.0, -1.0, 1, 1},
-      // negatives (ellipsoid, torus, square pyramid, octahedron; 30 each): right = unknown.
-      // 100 (fast form, shapes-3; prism-2: 77.5, box 20 octahedra, tetrahedron 4, cylinder 3).
-      // Issue 11 asks 95 and none named as one of the six (checked below).
-      {"negatives", 120, 97.0, -1.0, -1.0, -1.0, -1.0, 1, 1},
+      // negatives (ellipsoid, torus, square pyramid, octahedron, capsule; 30 each): right =
+      // unknown. 100 (fast form, shapes-3; prism-2: 77.5, box 20 octahedra, tetrahedron 4,
+      // cylinder 3; capsules cylinders but for solve.off_surface_max_share). Issue 11 asks 95
+      // and none named as one of the six (checked below).
+      {"negatives", 150, 97.0, -1.0, -1.0, -1.0, -1.0, 1, 1},
       // new_shapes (30 frusta, 30 prisms of nine cross-section kinds, 30 irregular tetrahedra,
       // noise 0.5%): 96.7 (frustum 30, tetrahedron 30, prism 27: box 1, a prism of 5 sides 1,
       // unknown 1); 0.16%, 1.29%; 0.07%; 0.06; 0, 0 (fast form, prism-2)

@@ -428,7 +428,8 @@ std::string describe_condition(const std::string& c) {
            "size (an unknown result has no centre: missed + false)";
   if (c == "real") return "YCB + ravens meshes, 20k points, seed 1; no pose truth";
   if (c == "negatives")
-    return "solids none of the shapes (ellipsoid, torus, square pyramid, octahedron), whole, "
+    return "solids none of the shapes (ellipsoid, torus, square pyramid, octahedron, capsule), "
+           "whole, "
            "noise sigma 0.5% of size; right = unknown";
   if (c == "new_shapes")
     return "shapes beyond the six (frustum; prism: triangle, rhombus, hexagons, convex n-gon, L, T, plus, "
