@@ -348,6 +348,18 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
     return unknown(sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf));
   }
+  // The share of direction sectors the chosen solid's points cover, once per solid chosen: the
+  // test below and the result's `partial` read it.
+  const FittedSolid* covered = nullptr;
+  double coverage = 0.0;
+  const auto coverage_of = [&](const FittedSolid& f) {
+    if (covered != &f) {
+      coverage =
+          sector_coverage(cloud, f.interior.value_or(f.center), f.axes, cfg.sector_min_share);
+      covered = &f;
+    }
+    return coverage;
+  };
   // A solid named for an object seen all round and alone in its cloud follows all of its surface:
   // a stretch of surface well inside it (a capsule's domes within a cylinder's caps, a pentagonal
   // prism's slanted faces within a box) says the object is none of the solids, however many
@@ -356,9 +368,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // points), and real meshes' views whose hidden extent was guessed as much; a box is what such
   // a carton is taken for. Nor in a scene, where a neighbour's fragment or the table's band
   // joined to an object lies off it too.
-  if (input.alone && cfg.off_surface_max_share > 0.0 &&
-      sector_coverage(cloud, chosen->first.interior.value_or(chosen->first.center),
-                      chosen->first.axes, cfg.sector_min_share) >= 1.0) {
+  if (input.alone && cfg.off_surface_max_share > 0.0 && coverage_of(chosen->first) >= 1.0) {
     std::optional<geometry::KdTree> own_tree;
     const geometry::KdTree& near_tree = tree != nullptr ? *tree : own_tree.emplace(cloud);
     const double off = detail::off_surface_share(cloud, near_tree, chosen->first,
@@ -449,10 +459,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.extent = extent_of(cloud, {s.axes}, cfg, pool);
   // A single view cannot confirm the hidden side: the dimensions describe what was seen,
   // and the confidence drops with the share of the solid that was not seen.
-  const double coverage =
-      sector_coverage(cloud, s.interior.value_or(s.center), s.axes, cfg.sector_min_share);
-  out.partial = coverage < 1.0;
-  out.confidence = std::clamp(chosen->second.explained * (0.5 + 0.5 * coverage), 0.0, 1.0);
+  out.partial = coverage_of(s) < 1.0;
+  out.confidence = std::clamp(chosen->second.explained * (0.5 + 0.5 * coverage_of(s)), 0.0, 1.0);
   return out;
 }
 
