@@ -365,8 +365,8 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // prism's slanted faces within a box) says the object is none of the solids, however many
   // points the rest explains. Not in a single view: a real milk carton seen from one side leaves
   // its gable inside its box as a capsule leaves its domes inside a cylinder (a fifth of the
-  // points), and real meshes' views whose hidden extent was guessed as much; a box is what such
-  // a carton is taken for. Nor in a scene, where a neighbour's fragment or the table's band
+  // points), and a real box's view its slightly bowed faces as much; a box is what such a carton
+  // is taken for. Nor in a scene, where a neighbour's fragment or the table's band
   // joined to an object lies off it too.
   if (input.alone && cfg.off_surface_max_share > 0.0 && coverage_of(chosen->first) >= 1.0) {
     std::optional<geometry::KdTree> own_tree;
