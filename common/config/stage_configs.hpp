@@ -187,9 +187,7 @@ struct SolveConfig {
   std::int64_t solid_min_scan_lines = 5;  // a lidar object on fewer scan lines is tried as a sphere only ...
   double scan_noise_ratio = 3.0;         // ... and its solid leaves the points at most this many times their noise from it (0: off)
   double free_space_max_share = 0.05;    // ... and is unknown where more than this share of the rays crossing it return from beyond it (0: off)
-  double off_surface_max_share =
-      0.08;  // an object seen all round and alone in its cloud is unknown where more than this
-             // share of its points lie on a stretch of surface inside its solid (0: off) ...
+  double off_surface_max_share = 0.08;   // an object seen whole and alone is unknown where more than this share of its points lie on a surface inside its solid (0: off) ...
   double off_surface_distance = 1.5;     // ... farther than this many inlier_distance inside it
   double apex_gap = 0.1;                 // a cone whose points stop this share of its slant height short of the apex, ringing its axis there, was cut: no cone
   double cone_tip_gap = 0.2;             // ... and no cone either when its points stop this share short of the apex, ringing it or not (a frustum seen from one side)

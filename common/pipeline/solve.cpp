@@ -348,15 +348,18 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
       std::snprintf(buf, sizeof buf, "no solid could be fitted");
     return unknown(sphere_only ? lines() + ", only a sphere tried: " + buf : std::string(buf));
   }
-  // The share of direction sectors the chosen solid's points cover, once per solid chosen: the
-  // test below and the result's `partial` read it.
-  const FittedSolid* covered = nullptr;
+  // The share of direction sectors the chosen solid's points cover, once per solid chosen (its
+  // place in `fitted`, which later fits may move): the test below and the result's `partial`
+  // read it.
+  std::size_t covered = std::numeric_limits<std::size_t>::max();
   double coverage = 0.0;
-  const auto coverage_of = [&](const FittedSolid& f) {
-    if (covered != &f) {
+  const auto coverage_of = [&](const std::pair<FittedSolid, Verification>* c) {
+    const auto slot = static_cast<std::size_t>(c - fitted.data());
+    if (covered != slot) {
+      const FittedSolid& f = c->first;
       coverage =
           sector_coverage(cloud, f.interior.value_or(f.center), f.axes, cfg.sector_min_share);
-      covered = &f;
+      covered = slot;
     }
     return coverage;
   };
@@ -368,7 +371,7 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   // points), and a real box's view its slightly bowed faces as much; a box is what such a carton
   // is taken for. Nor in a scene, where a neighbour's fragment or the table's band
   // joined to an object lies off it too.
-  if (input.alone && cfg.off_surface_max_share > 0.0 && coverage_of(chosen->first) >= 1.0) {
+  if (input.alone && cfg.off_surface_max_share > 0.0 && coverage_of(chosen) >= 1.0) {
     std::optional<geometry::KdTree> own_tree;
     const geometry::KdTree& near_tree = tree != nullptr ? *tree : own_tree.emplace(cloud);
     const double off = detail::off_surface_share(cloud, near_tree, chosen->first,
@@ -459,8 +462,9 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
   out.extent = extent_of(cloud, {s.axes}, cfg, pool);
   // A single view cannot confirm the hidden side: the dimensions describe what was seen,
   // and the confidence drops with the share of the solid that was not seen.
-  out.partial = coverage_of(s) < 1.0;
-  out.confidence = std::clamp(chosen->second.explained * (0.5 + 0.5 * coverage_of(s)), 0.0, 1.0);
+  out.partial = coverage_of(chosen) < 1.0;
+  out.confidence =
+      std::clamp(chosen->second.explained * (0.5 + 0.5 * coverage_of(chosen)), 0.0, 1.0);
   return out;
 }
 
