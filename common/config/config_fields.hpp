@@ -73,6 +73,7 @@ void visit_fields(SegmentConfig& c, F&& f) {
   f("structure_margin_cells", c.structure_margin_cells);
   f("structure_contact_min_degrees", c.structure_contact_min_degrees);
   f("structure_min_standing", c.structure_min_standing);
+  f("structure_max_behind", c.structure_max_behind);
   f("structure_enclosing", c.structure_enclosing);
   f("structure_span", c.structure_span);
   f("structure_hypotheses", c.structure_hypotheses);

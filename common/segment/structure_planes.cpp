@@ -236,6 +236,34 @@ bool encloses_viewer(const NeighbourGraph& g, const std::vector<std::uint32_t>& 
          cfg.structure_span * std::sqrt(std::max(0.0, scene.eigenvalues(2)));
 }
 
+// How far the surface joined to a plane reaches behind it (its closed side): the 90th percentile
+// of the depths behind the band of the nodes reached from its inliers through nodes not in front
+// of its band. A solid's face has its solid's other faces going back from its edges as far as the
+// solid is deep; a table's edge reaches back its thickness, a wall nothing (the objects in front
+// of them are not followed beyond the band).
+double depth_behind(const NeighbourGraph& g, const std::vector<char>& removed,
+                    const std::vector<char>& inlier, const std::vector<std::uint32_t>& inliers,
+                    const geometry::Plane& p, double band) {
+  std::vector<char> seen(inlier.begin(), inlier.end());
+  std::vector<std::uint32_t> queue(inliers.begin(), inliers.end());
+  std::vector<double> depth;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    g.for_neighbours(queue[head], [&](std::uint32_t m) {
+      if (seen[m] || removed[m]) return;
+      seen[m] = 1;
+      const double height = p.signed_distance(g.nodes[m]);
+      if (height > band * g.spacing[m]) return;
+      queue.push_back(m);
+      if (height < -band * g.spacing[m]) depth.push_back(-height);
+    });
+  }
+  if (depth.empty()) return 0.0;
+  const auto at =
+      depth.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(depth.size() - 1));
+  std::nth_element(depth.begin(), at, depth.end());
+  return *at;
+}
+
 }  // namespace
 
 std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const config::SegmentConfig& cfg,
@@ -313,7 +341,17 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     }
     const std::size_t inside = standing_inside(g, coplanar, contact, fit.plane, cell, cfg.structure_margin_cells,
                                                std::sin(cfg.structure_contact_min_degrees * kPi / 180.0));
-    const bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing && ratio >= cfg.structure_reach;
+    bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing &&
+                    ratio >= cfg.structure_reach;
+    // A solid's face: its other faces go back from its edges as deep as the solid, a table's edge
+    // its own thickness, a few percent of the table (narrower: the width of an even rectangle of
+    // the inliers' spread).
+    if (supports) {
+      const geometry::Pca extent = geometry::compute_pca(g.nodes, fit.inliers);
+      const double narrower = std::sqrt(12.0 * std::max(0.0, extent.eigenvalues(1)));
+      supports = depth_behind(g, removed, inlier, fit.inliers, fit.plane, cfg.structure_band) <=
+                 cfg.structure_max_behind * narrower;
+    }
     const bool encloses = !supports && may_enclose && encloses_viewer(g, active, inlier, fit, cfg);
     if (!supports && !encloses) {
       for (std::uint32_t n : fit.inliers) tried[n] = 1;
