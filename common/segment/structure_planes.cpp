@@ -240,21 +240,30 @@ bool encloses_viewer(const NeighbourGraph& g, const std::vector<std::uint32_t>& 
 // of the depths behind the band of the nodes reached from its inliers through nodes not in front
 // of its band. A solid's face has its solid's other faces going back from its edges as far as the
 // solid is deep; a table's edge reaches back its thickness, a wall nothing (the objects in front
-// of them are not followed beyond the band).
+// of them are not followed beyond the band). The search starts from the nodes off the plane that
+// border it (fewer than its inliers, whose neighbours are mostly inliers too).
 double depth_behind(const NeighbourGraph& g, const std::vector<char>& removed,
-                    const std::vector<char>& inlier, const std::vector<std::uint32_t>& inliers,
+                    const std::vector<char>& inlier, const std::vector<std::uint32_t>& active,
                     const geometry::Plane& p, double band) {
-  std::vector<char> seen(inlier.begin(), inlier.end());
-  std::vector<std::uint32_t> queue(inliers.begin(), inliers.end());
+  std::vector<char> seen(g.size(), 0);
+  std::vector<std::uint32_t> queue;
   std::vector<double> depth;
+  const auto reach = [&](std::uint32_t m) {
+    seen[m] = 1;
+    const double height = p.signed_distance(g.nodes[m]);
+    if (height > band * g.spacing[m]) return;
+    queue.push_back(m);
+    if (height < -band * g.spacing[m]) depth.push_back(-height);
+  };
+  for (std::uint32_t n : active) {
+    if (inlier[n]) continue;
+    bool borders = false;
+    g.for_neighbours(n, [&](std::uint32_t m) { borders = borders || inlier[m] != 0; });
+    if (borders) reach(n);
+  }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     g.for_neighbours(queue[head], [&](std::uint32_t m) {
-      if (seen[m] || removed[m]) return;
-      seen[m] = 1;
-      const double height = p.signed_distance(g.nodes[m]);
-      if (height > band * g.spacing[m]) return;
-      queue.push_back(m);
-      if (height < -band * g.spacing[m]) depth.push_back(-height);
+      if (!seen[m] && !removed[m] && !inlier[m]) reach(m);
     });
   }
   if (depth.empty()) return 0.0;
@@ -262,6 +271,19 @@ double depth_behind(const NeighbourGraph& g, const std::vector<char>& removed,
       depth.begin() + static_cast<std::ptrdiff_t>(0.9 * static_cast<double>(depth.size() - 1));
   std::nth_element(depth.begin(), at, depth.end());
   return *at;
+}
+
+// The narrower in-plane extent of a plane's inliers: the width of an even rectangle of their
+// spread (a strided sample of at most kExtentSamples of them: an extent, not a fit).
+double narrower_extent(const NeighbourGraph& g, const std::vector<std::uint32_t>& inliers) {
+  constexpr std::size_t kExtentSamples = 4096;
+  const std::size_t step = (inliers.size() + kExtentSamples - 1) / kExtentSamples;
+  std::vector<std::uint32_t> sample;
+  sample.reserve(inliers.size() / std::max<std::size_t>(1, step) + 1);
+  for (std::size_t i = 0; i < inliers.size(); i += std::max<std::size_t>(1, step))
+    sample.push_back(inliers[i]);
+  const geometry::Pca extent = geometry::compute_pca(g.nodes, sample);
+  return std::sqrt(12.0 * std::max(0.0, extent.eigenvalues(1)));
 }
 
 }  // namespace
@@ -344,13 +366,10 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing &&
                     ratio >= cfg.structure_reach;
     // A solid's face: its other faces go back from its edges as deep as the solid, a table's edge
-    // its own thickness, a few percent of the table (narrower: the width of an even rectangle of
-    // the inliers' spread).
+    // its own thickness, a few percent of the table.
     if (supports) {
-      const geometry::Pca extent = geometry::compute_pca(g.nodes, fit.inliers);
-      const double narrower = std::sqrt(12.0 * std::max(0.0, extent.eigenvalues(1)));
-      supports = depth_behind(g, removed, inlier, fit.inliers, fit.plane, cfg.structure_band) <=
-                 cfg.structure_max_behind * narrower;
+      supports = depth_behind(g, removed, inlier, active, fit.plane, cfg.structure_band) <=
+                 cfg.structure_max_behind * narrower_extent(g, fit.inliers);
     }
     const bool encloses = !supports && may_enclose && encloses_viewer(g, active, inlier, fit, cfg);
     if (!supports && !encloses) {
