@@ -11,6 +11,7 @@
 
 #include "captured_scene.hpp"
 #include "config/pipeline_config.hpp"
+#include "kinect_faults.hpp"
 #include "segment/segment_scene.hpp"
 #include "synth/scene_capture.hpp"
 
@@ -205,11 +206,7 @@ TEST(SegmentSyntheticScenes, FrontsJoinedAtAKinkAreCutAlongTheLowerTop) {
 // no false segment; 1 of 6 when every convex edge stopped the cut. Seed 16's two upper boxes (the
 // top one mostly hidden) are still one segment.
 TEST(SegmentSyntheticScenes, AShortConvexEdgeWhereAStripRunsOutDoesNotStopTheCut) {
-  synth::CaptureOptions kinect;
-  kinect.depth_noise = 0.0019;
-  kinect.quantize = true;
-  kinect.shadows = true;
-  kinect.flying_pixels = 0.5;
+  const synth::CaptureOptions kinect = testing::kinect_faults();
   std::size_t objects = 0, found = 0, false_objects = 0;
   std::string detail;
   for (std::uint64_t seed : {2, 16}) {
@@ -276,11 +273,7 @@ TEST(SegmentSyntheticScenes, ObjectsAgainstAWall) { expect_every_object(synth::S
 // face's width; a table's edge 0.010-0.014 of the table's in mosd_learn), so it is no structure
 // (segment.structure_max_behind): every box one segment. Without the test, 3 of the 7.
 TEST(SegmentSyntheticScenes, ABoxsFaceWithItsBoxBehindItIsNoStructure) {
-  synth::CaptureOptions kinect;
-  kinect.depth_noise = 0.0019;
-  kinect.quantize = true;
-  kinect.shadows = true;
-  kinect.flying_pixels = 0.5;
+  const synth::CaptureOptions kinect = testing::kinect_faults();
   config::SegmentConfig without = config::PipelineConfig{}.segment;
   without.structure_max_behind = 1e9;
   std::size_t objects = 0, found = 0, found_without = 0, false_objects = 0;
