@@ -134,7 +134,7 @@ struct SegmentConfig {
   std::int64_t structure_margin_cells = 3; // ... inside it: structure_min_standing of those have plane this many cells (2 node spacings) beyond them on all four sides
   double structure_contact_min_degrees = 12.0;  // ... where it meets the plane (down its own slope): none for surfaces closer to parallel than this
   std::int64_t structure_min_standing = 10;  // nodes that must stand on the viewer's side of a plane for it to be structure
-  double structure_max_behind = 0.25;      // ... and the surface joined to it reaches behind it at most this share of its narrower extent (a solid's face has its solid behind it)
+  double structure_max_behind = 0.25;      // ... and, after the first support, the surface joined to it reaches behind it at most this share of its narrower extent (a solid's face has its solid behind it)
   double structure_enclosing = 0.75;       // in a lidar frame (scan_beam_*), a plane with this share of the other nodes on the viewer's side ...
   double structure_span = 0.3;             // ... spanning this share of the scene (standard deviations along the largest axis) is structure too: a wall or ground seen from inside
   std::int64_t structure_hypotheses = 200; // RANSAC hypotheses per structure plane

@@ -366,8 +366,11 @@ std::vector<StructurePlane> remove_structure(const NeighbourGraph& g, const conf
     bool supports = static_cast<std::int64_t>(inside) >= cfg.structure_min_standing &&
                     ratio >= cfg.structure_reach;
     // A solid's face: its other faces go back from its edges as deep as the solid, a table's edge
-    // its own thickness, a few percent of the table.
-    if (supports) {
+    // its own thickness, a few percent of the table. Not the first support found, the plane through
+    // most nodes that things stand on: a kitchen counter's front goes down as deep as the counter
+    // is wide, but what stands on the counter is the scene; a second support with its solid behind
+    // it is a face of one of the things on the first.
+    if (supports && !found.empty()) {
       supports = depth_behind(g, removed, inlier, active, fit.plane, cfg.structure_band) <=
                  cfg.structure_max_behind * narrower_extent(g, fit.inliers);
     }

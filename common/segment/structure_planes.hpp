@@ -23,12 +23,13 @@ struct StructurePlane {
 // nodes are on) and meet it inside (plane cfg.structure_margin_cells beyond where their surface,
 // followed down its own slope, meets the plane, in all four in-plane directions; every node in the
 // plane's band counts there, the table beyond an object's shadow too), and its area is
-// at least cfg.structure_reach times their footprint, and the surface joined to it reaches behind
-// it no more than cfg.structure_max_behind of its narrower extent: a solid's own face has its solid
-// behind it, covers no more than the solid does, and meets the solid's other faces at its own
-// edges (a cone's side leans over its base, but meets it at the base's edge; a box beside a box
-// that stands out of it stands inside the plane of both fronts, but the box's top goes back from
-// its front as deep as the box). Deterministic for cfg.seed,
+// at least cfg.structure_reach times their footprint, and, for every plane after the first found,
+// the surface joined to it reaches behind it no more than cfg.structure_max_behind of its narrower
+// extent: a solid's own face has its solid behind it, covers no more than the solid does, and
+// meets the solid's other faces at its own edges (a cone's side leans over its base, but meets it
+// at the base's edge; a box beside a box that stands out of it stands inside the plane of both
+// fronts, but the box's top goes back from its front as deep as the box; the first support is the
+// scene's, a kitchen counter's top over its deep front too). Deterministic for cfg.seed,
 // whatever `pool` scores the hypotheses.
 // `from_inside`: the graph's viewpoint is a lidar's among its ground and walls; a plane with at
 // least cfg.structure_enclosing of the other nodes on the sensor's side and spanning

@@ -18,18 +18,23 @@ struct CapturedScene {
   std::map<std::uint32_t, std::size_t> size;  // points per label
 };
 
-inline CapturedScene capture_points(const synth::SceneRecipe& recipe, const synth::CaptureOptions& options) {
-  const synth::SceneCapture capture = synth::capture_scene(recipe, options);
+// The finite pixels of a rendered frame, with their pixels and labels.
+inline CapturedScene captured_points(const synth::RangeImage& image) {
   CapturedScene out;
-  out.grid = GridLayout{capture.image.width, capture.image.height, {}};
-  for (std::size_t i = 0; i < capture.image.points.size(); ++i) {
-    if (!capture.image.points[i].allFinite()) continue;
-    out.points.push_back(capture.image.points[i]);
+  out.grid = GridLayout{image.width, image.height, {}};
+  for (std::size_t i = 0; i < image.points.size(); ++i) {
+    if (!image.points[i].allFinite()) continue;
+    out.points.push_back(image.points[i]);
     out.grid.pixel.push_back(static_cast<std::uint32_t>(i));
-    out.labels.push_back(capture.image.labels[i]);
-    ++out.size[capture.image.labels[i]];
+    out.labels.push_back(image.labels[i]);
+    ++out.size[image.labels[i]];
   }
   return out;
+}
+
+inline CapturedScene capture_points(const synth::SceneRecipe& recipe,
+                                    const synth::CaptureOptions& options) {
+  return captured_points(synth::capture_scene(recipe, options).image);
 }
 
 }  // namespace cloudshape::segment
