@@ -277,11 +277,11 @@ double depth_behind(const NeighbourGraph& g, const std::vector<char>& removed,
 // spread (a strided sample of at most kExtentSamples of them: an extent, not a fit).
 double narrower_extent(const NeighbourGraph& g, const std::vector<std::uint32_t>& inliers) {
   constexpr std::size_t kExtentSamples = 4096;
-  const std::size_t step = (inliers.size() + kExtentSamples - 1) / kExtentSamples;
+  const std::size_t step =
+      std::max<std::size_t>(1, (inliers.size() + kExtentSamples - 1) / kExtentSamples);
   std::vector<std::uint32_t> sample;
-  sample.reserve(inliers.size() / std::max<std::size_t>(1, step) + 1);
-  for (std::size_t i = 0; i < inliers.size(); i += std::max<std::size_t>(1, step))
-    sample.push_back(inliers[i]);
+  sample.reserve(inliers.size() / step + 1);
+  for (std::size_t i = 0; i < inliers.size(); i += step) sample.push_back(inliers[i]);
   const geometry::Pca extent = geometry::compute_pca(g.nodes, sample);
   return std::sqrt(12.0 * std::max(0.0, extent.eigenvalues(1)));
 }
