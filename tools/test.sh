@@ -76,12 +76,13 @@ if ((sanitize)); then
   logs="$CLOUDSHAPE_BUILD_DIR/sanitized-logs"
   rm -rf "$logs" && mkdir -p "$logs"
   declare -A running=()
+  log_of() { printf '%s/%s.log' "$logs" "${1//\//_}"; }  # a job's name may hold a '/'
   reap_one() {
     local pid="" status=0
     wait -n -p pid "${!running[@]}" || status=$?
     local t=${running[$pid]}
     unset "running[$pid]"
-    if ((status == 0)); then cs_log "sanitized: $t clean"; else cat "$logs/${t//\//_}.log" >&2; failed+=("$t"); fi
+    if ((status == 0)); then cs_log "sanitized: $t clean"; else cat "$(log_of "$t")" >&2; failed+=("$t"); fi
   }
   # recognition_tests runs ten times longer under ASan than any other program (about 640 of the
   # unit programs' 720 s on this 2-core VM, one test up to a few minutes): its tests go first, a
@@ -90,8 +91,8 @@ if ((sanitize)); then
   listing=$("$CLOUDSHAPE_BUILD_DIR/bin/recognition_tests" --gtest_list_tests) \
     || cs_die "recognition_tests --gtest_list_tests failed under ASan + UBSan"
   while IFS= read -r line; do
-    if [[ $line =~ ^([A-Za-z0-9_/]+\.)$|^([A-Za-z0-9_/]+\.)\ + ]]; then
-      suite=${BASH_REMATCH[1]}${BASH_REMATCH[2]}
+    if [[ $line =~ ^([A-Za-z0-9_/]+\.)( |$) ]]; then
+      suite=${BASH_REMATCH[1]}
     elif [[ $line =~ ^\ \ ([A-Za-z0-9_/]+) ]]; then
       jobs+=("recognition_tests:$suite${BASH_REMATCH[1]}")
     fi
@@ -103,7 +104,7 @@ if ((sanitize)); then
     t=${job%%:*}
     filter=()
     [[ $job == *:* ]] && filter=(--gtest_filter="${job#*:}")
-    "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 "${filter[@]}" >"$logs/${job//\//_}.log" 2>&1 &
+    "$CLOUDSHAPE_BUILD_DIR/bin/$t" --gtest_brief=1 "${filter[@]}" >"$(log_of "$job")" 2>&1 &
     running[$!]=$job
   done
   while ((${#running[@]})); do reap_one; done
