@@ -101,9 +101,9 @@ if ((sanitize)); then
     if [[ $line =~ ^([A-Za-z0-9_/]+\.)( |$) ]]; then
       suite=${BASH_REMATCH[1]}
     elif [[ $line =~ ^\ \ ([A-Za-z0-9_/]+) ]]; then
-      test="$suite${BASH_REMATCH[1]}"
-      if [[ " ${sanitize_skipped_tests[*]} " == *" $test "* ]]; then skipped+=("$test"); continue; fi
-      jobs+=("recognition_tests:$test")
+      name="$suite${BASH_REMATCH[1]}"
+      if [[ " ${sanitize_skipped_tests[*]} " == *" $name "* ]]; then skipped+=("$name"); continue; fi
+      jobs+=("recognition_tests:$name")
     fi
   done <<<"$listing"
   ((${#skipped[@]} == ${#sanitize_skipped_tests[@]})) \
