@@ -44,10 +44,14 @@ std::vector<Eigen::Vector3d> face_directions(const Eigen::Matrix3d& frame) {
   return directions;
 }
 
-// A box's faces are rectangles: a face holding a fair share of the face points whose outline
-// fills less of its smallest enclosing rectangle (a triangle fills half) is a prism's cap, a
-// tetrahedron's or a pyramid's face. The outline is the convex hull, so the holes and ragged
-// fill of a real sensor's partial face do not count; only a cut corner does, and mildly. A face
+// A box's faces are rectangles: a face whose outline fills less of its smallest enclosing
+// rectangle (a triangle fills half) is a prism's cap, a tetrahedron's or a pyramid's face. The
+// outline is the convex hull, so the holes and ragged fill of a real sensor's partial face do not
+// count; only a cut corner does, and mildly. In a scene a neighbour may hide part of a small face
+// (a corner of it cut away leaves less than a rectangle): there only faces holding a fair share
+// of the face points are judged. An object alone in its cloud has nothing beside it to hide part
+// of a face, and a convex box hides none of the faces it shows: every face is judged, down to a
+// prism's cap seen at a grazing angle (a few per cent of the points, a whole triangle). A face
 // is judged with every face along the same box direction (`directions`, within acos(cos_parallel))
 // lying within the step depth of it (detail::step_depth):
 // RANSAC cuts a real box's bulging face into pieces a few millimetres apart, and a piece cut
@@ -56,8 +60,9 @@ bool faces_are_rectangles(const SolveInput& in, const std::vector<const Detected
                           const std::vector<Eigen::Vector3d>& directions, double cos_parallel) {
   std::size_t all = 0;
   for (const DetectedPlane* f : faces) all += f->inliers.size();
+  const double min_share = in.alone ? 0.0 : in.cfg.box_outline_min_share;
   for (const DetectedPlane* f : faces) {
-    if (static_cast<double>(f->inliers.size()) < in.cfg.box_outline_min_share * static_cast<double>(all)) continue;
+    if (static_cast<double>(f->inliers.size()) < min_share * static_cast<double>(all)) continue;
     DetectedPlane face = *f;
     for (const Eigen::Vector3d& d : directions) {
       if (f->plane.normal.dot(d) < cos_parallel) continue;
