@@ -135,12 +135,17 @@ std::optional<FittedSolid> fit_box(const SolveInput& in) {
       min_t = std::min(min_t, p.dot(axis));
       max_t = std::max(max_t, p.dot(axis));
     }
+    // A face bounds the points: the end of their range it lies nearer is its side of the box.
+    // Not its normal's sign: segment_planes turns a normal away from the cloud's centroid, which a
+    // view of mostly one face puts in that face, and a real box's bulging face, cut into pieces,
+    // then had pieces on both sides (a box 2.4 mm deep, no box).
     double face_lo = std::numeric_limits<double>::quiet_NaN(), face_hi = face_lo;
     for (const DetectedPlane* f : faces) {
       const double c = f->plane.normal.dot(axis);
       if (std::abs(c) < cos_parallel) continue;
       const double pos = detail::face_position(in.cloud, *f, axis);
-      if (c > 0) face_hi = std::isnan(face_hi) ? pos : std::max(face_hi, pos);
+      if (max_t - pos < pos - min_t)
+        face_hi = std::isnan(face_hi) ? pos : std::max(face_hi, pos);
       else face_lo = std::isnan(face_lo) ? pos : std::min(face_lo, pos);
     }
     const double slab = std::max(in.cfg.face_slab * (max_t - min_t), 2.0 * in.resolution);
