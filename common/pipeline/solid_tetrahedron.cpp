@@ -223,6 +223,10 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
   // tetrahedron from the two largest when both are whole triangles. An irregular one may meet at
   // a regular one's angles too: a regular reading whose faces the seen points do not fill
   // (within solve.triangle_fill_tolerance) gives way to the other where that fills them closer.
+  // Alone in its cloud, nothing hides part of a face the object shows (and a tetrahedron hides
+  // none of its own): a regular reading no seen face fills, with no other reading, is no
+  // tetrahedron (two sides of a star prism 108 degrees apart, each a rectangle a third of the
+  // triangle's area, passed for a regular tetrahedron explaining half the points).
   if (!vertices) {
     const auto regular = seen.size() >= 2 ? from_seen_faces(in, seen) : std::nullopt;
     const auto any = detail::tetrahedron_from_two_faces(in, faces, cos_parallel);
@@ -232,6 +236,9 @@ std::optional<FittedSolid> fit_tetrahedron(const SolveInput& in) {
       if (regular_error > in.cfg.triangle_fill_tolerance &&
           fill_error(in, *any, seen) < regular_error)
         vertices = any;
+    } else if (regular && in.alone &&
+               fill_error(in, *regular, seen) > in.cfg.triangle_fill_tolerance) {
+      return std::nullopt;
     }
   }
   if (!vertices) return std::nullopt;
