@@ -184,6 +184,7 @@ void visit_fields(SolveConfig& c, F&& f) {
   f("triangle_fill_tolerance", c.triangle_fill_tolerance);
   f("curved_side_flat_share", c.curved_side_flat_share);
   f("cylinder_min_side_share", c.cylinder_min_side_share);
+  f("tapered_min_rim_reach", c.tapered_min_rim_reach);
   f("side_face_min_share", c.side_face_min_share);
   f("flat_face_fill_cells", c.flat_face_fill_cells);
   f("flat_face_min_fill", c.flat_face_min_fill);

@@ -206,6 +206,9 @@ struct SolveConfig {
   // a cylinder is claimed only when at least this share of its points lie on its side: a flat
   // face within a cap's circle (a tetrahedron's, two boxes' tops) has almost none
   double cylinder_min_side_share = 0.05;
+  // a cone or frustum is claimed only when its points reach this share of its base radius from
+  // its axis: its rim is where its side ends, not beyond the points (0: off)
+  double tapered_min_rim_reach = 0.9;
   double box_face_rect_fill = 0.6;       // a box's larger faces fill at least this share of their smallest enclosing rectangle (a triangle: half) ...
   double box_outline_min_share = 0.15;   // ... those holding at least this share of the flat faces' points
   double box_depth_min_share = 0.05;    // a box seen on one face alone needs this share of the points off it

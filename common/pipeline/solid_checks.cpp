@@ -120,6 +120,23 @@ double plane_share(const PointList& cloud, double tolerance, std::size_t max_sam
   return static_cast<double>(inliers.size()) / static_cast<double>(sample.size());
 }
 
+double rim_reach(const PointList& cloud, const FittedSolid& solid, double tolerance,
+                 std::size_t max_samples) {
+  if ((solid.shape != Shape::cone && solid.shape != Shape::frustum) || cloud.empty()) return 0.0;
+  double radius = dimension(solid, "radius");
+  if (solid.shape == Shape::frustum) radius = std::max(radius, dimension(solid, "top_radius"));
+  if (!(radius > 0.0)) return 0.0;
+  const Eigen::Vector3d axis = solid.axes.row(0).transpose();
+  const std::size_t step = sample_step(cloud.size(), max_samples);
+  double reach = 0.0;
+  for (std::size_t i = 0; i < cloud.size(); i += step) {
+    if (!(std::abs(solid.signed_distance(cloud[i])) <= tolerance)) continue;
+    const Eigen::Vector3d d = cloud[i] - solid.center;
+    reach = std::max(reach, (d - d.dot(axis) * axis).norm());
+  }
+  return reach / radius;
+}
+
 double cylinder_side_share(const PointList& cloud, const FittedSolid& solid, double tolerance,
                            std::size_t max_samples) {
   if (solid.shape != Shape::cylinder || cloud.empty()) return 0.0;

@@ -26,6 +26,12 @@ Verification verify(const PointList& cloud, const FittedSolid& solid, double tol
 // fits those within it: the points' plane, refitted twice to its inliers.
 double plane_share(const PointList& cloud, double tolerance, std::size_t max_samples);
 
+// How far from a cone's or frustum's axis the points within `tolerance` of it reach (about
+// `max_samples` of the points, evenly strided), as a share of its base radius (the larger of its
+// radii); 0 for other solids and for no such point.
+double rim_reach(const PointList& cloud, const FittedSolid& solid, double tolerance,
+                 std::size_t max_samples);
+
 // Share of the points (the same sample as verify's) within `tolerance` of a cylinder's side (its
 // radius off the axis, between its caps and beyond `tolerance` of their planes: a cap's rim is
 // the cap's), 0 for any other solid: a cylinder's radius and axis are the side's; a flat face

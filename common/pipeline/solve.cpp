@@ -132,6 +132,11 @@ ObjectResult solve_object(const PointList& cloud, const PlaneSegmentation& plane
             detail::cylinder_side_share(cloud, *solid, tolerance,
                                         static_cast<std::size_t>(cfg.verify_samples)) >=
                 cfg.cylinder_min_side_share) &&
+           ((solid->shape != Shape::cone && solid->shape != Shape::frustum) ||
+            !(cfg.tapered_min_rim_reach > 0.0) ||
+            detail::rim_reach(cloud, *solid, tolerance,
+                              static_cast<std::size_t>(cfg.verify_samples)) >=
+                cfg.tapered_min_rim_reach) &&
            flat_side_share(*solid, planes, cloud, cos_parallel,
                            cfg.flat_face_fill_cells * resolution, cfg.flat_face_min_fill,
                            cfg.side_face_min_share, cfg.arc_max_scatter_cells,

@@ -275,9 +275,11 @@ TEST(NoisyDepthScene, SolidsThePointsDoNotTellApartAreNotNamed) {
 // where the cone explained under solve.side_fit_min_inlier_fraction, and all four were named
 // cylinders. It is now tried also where the cone explains solve.min_inlier_fraction but is out of
 // the running (more than solve.preferred_margin below the most explained), and explains 98-100%:
-// measured, every one a cone, radius within 10% and height within 7%; tolerance 15%. Since the
-// planes' band follows the noise along the rays, row 8's (twice the noise) is `unknown`: a plane
-// within that noise explains 79% of its points, the cone 75%.
+// measured, every one a cone, radius within 10% and height within 7%; tolerance 15%. Row 8's
+// (twice the noise) was `unknown` while the planes' band followed the noise along the rays (a
+// plane within that noise explained 79% of its points, the cone 75%), until cones and frusta whose
+// points stop short of their rim dropped out (solve.tapered_min_rim_reach): a cone again, radius
+// 4.7% short, height 3.7% long.
 TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
   const auto cfg = config::load_pipeline_config(CLOUDSHAPE_PIPELINE_YAML);
   const synth::CaptureOptions twice = twice_the_noise();
@@ -286,11 +288,8 @@ TEST(NoisyDepthScene, ConesOutOfTheRunningGetTheirSideFitted) {
       stored_frame(synth::SceneLayout::row, 8, twice, 3),
       stored_frame(synth::SceneLayout::wall, 12, kinect_faults(), 4),
       stored_frame(synth::SceneLayout::wall, 14, kinect_faults(), 4)};
-  std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
+  const std::vector<Holding> cones = holdings(frames, cfg, synth::ShapeKind::cone);
   ASSERT_EQ(cones.size(), 4u);
-  ASSERT_TRUE(cones[1].report.has_value());
-  EXPECT_EQ(cones[1].report->shape, "unknown");
-  cones.erase(cones.begin() + 1);
   expect_cones(cones, 0.15);
 }
 

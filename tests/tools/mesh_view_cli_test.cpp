@@ -112,6 +112,37 @@ TEST_P(MeshViewCli, GivesOneSolidOfTheVisibleSize) {
   }
 }
 
+// A real box's bulging face and a can's recessed lid, each seen from above (the cracker box from
+// 13 degrees up, its front face bulging 5 mm; the tuna can from 71 degrees, its lid's dish a
+// segment of its own): a cone 0.32 m and 0.10 m wide and 7-10 mm tall fitted each gentle dome,
+// its base rim far beyond the points (they reached 0.58 and 0.69 of its radius), and was named at
+// confidence 0.59 and 0.68. No cone or frustum stands where its points stop short of its rim
+// (solve.tapered_min_rim_reach); unknown is an honest answer here.
+TEST(MeshViewCliGentleDome, IsNoCone) {
+  const std::vector<std::pair<std::string, std::pair<std::string, std::string>>> cases = {
+      {"ycb/003_cracker_box_google16k.obj", {"0.578,-0.087,0.135", "12"}},
+      {"ycb/007_tuna_fish_can_google16k.obj", {"-0.132,-0.136,0.569", "29"}}};
+  for (const auto& [file, view] : cases) {
+    const fs::path mesh = fs::path(CLOUDSHAPE_SHARED_DATA_DIR) / "real" / file;
+    CLOUDSHAPE_REQUIRE_SHARED_DATA(mesh);
+    const fs::path cloud =
+        fs::temp_directory_path() / ("cloudshape_gentle_dome_" + std::to_string(getpid()) + ".pcd");
+    const auto synth =
+        testing::run_process({CLOUDSHAPE_SYNTH_BIN, "mesh", mesh.string(), "--points", "20000",
+                              "--view", view.first, "--seed", view.second, "-o", cloud.string()});
+    ASSERT_EQ(synth.exit_code, 0) << synth.err;
+    const auto recognized = testing::run_process({CLOUDSHAPE_RECOGNIZE_BIN, cloud.string()});
+    fs::remove(cloud);
+    ASSERT_EQ(recognized.exit_code, 0) << recognized.err;
+    const auto objects = nlohmann::json::parse(recognized.out).at("objects");
+    ASSERT_FALSE(objects.empty()) << file;
+    for (const auto& o : objects) {
+      EXPECT_NE(o.at("shape"), "cone") << file << ": " << o.dump();
+      EXPECT_NE(o.at("shape"), "frustum") << file << ": " << o.dump();
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(RealMeshes, MeshViewCli, ::testing::ValuesIn(views()),
                          [](const auto& info) { return info.param.name; });
 INSTANTIATE_TEST_SUITE_P(DISABLED_RecessedLid, MeshViewCli, ::testing::ValuesIn(recessed_lid_views()),
